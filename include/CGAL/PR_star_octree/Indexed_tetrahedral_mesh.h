@@ -1,0 +1,68 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_INDEXED_TETRAHEDRAL_MESH_H
+#define CGAL_PR_STAR_OCTREE_INDEXED_TETRAHEDRAL_MESH_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace PR_star_octree {
+
+/// \ingroup PkgPRStarOctreeRef
+/// A named scalar array with one value per vertex (VTK "point data").
+struct Point_data_array {
+  std::string name;
+  std::vector<double> values;
+};
+
+/// \ingroup PkgPRStarOctreeRef
+/// The plain indexed representation of a tetrahedral mesh (paper Section 2.3): an array of
+/// points `V` and an array of tetrahedra `T`, each given by the indices of its four vertices
+/// (0-based).  Optional data: named per-vertex scalar arrays (the first one is "the" scalar field
+/// used by default) and an integer label per tetrahedron (Medit reference, subdomain index).
+///
+/// This is what the readers of `CGAL/PR_star_octree/IO/` produce and the writers consume; it is a
+/// model of `PRStarOctreeInputMesh` through `CGAL::PR_star_octree::make_input()`.
+///
+/// \tparam Point_3_ the point type (default: `Exact_predicates_inexact_constructions_kernel::Point_3`)
+/// \tparam Index_ an unsigned integer type for vertex indices (default: 32 bits)
+template <class Point_3_ = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3,
+          class Index_ = std::uint32_t>
+struct Indexed_tetrahedral_mesh {
+  using Point_3 = Point_3_;
+  using Index = Index_;
+  using Tetrahedron = std::array<Index, 4>;
+
+  std::vector<Point_3> points;
+  std::vector<Tetrahedron> tetrahedra;
+  /// empty, or one label per tetrahedron
+  std::vector<int> tetrahedron_labels;
+  /// each array has `points.size()` values
+  std::vector<Point_data_array> point_data;
+
+  std::size_t number_of_vertices() const { return points.size(); }
+  std::size_t number_of_tetrahedra() const { return tetrahedra.size(); }
+
+  /// the first point-data array, or `nullptr` when there is none
+  const Point_data_array* scalar_field() const { return point_data.empty() ? nullptr : &point_data.front(); }
+
+  /// the point-data array named `name`, or `nullptr`
+  const Point_data_array* find_point_data(const std::string& name) const {
+    for (const Point_data_array& a : point_data)
+      if (a.name == name) return &a;
+    return nullptr;
+  }
+};
+
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_INDEXED_TETRAHEDRAL_MESH_H
