@@ -1,0 +1,223 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_IO_TET_OFF_H
+#define CGAL_PR_STAR_OCTREE_IO_TET_OFF_H
+
+#include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/internal/text.h>
+#include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
+
+#include <cstddef>
+#include <fstream>
+#include <istream>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace PR_star_octree {
+namespace IO {
+namespace internal {
+
+template <class Mesh>
+void read_tet_off_text(std::string_view text, const std::string& name, Mesh& result) {
+  using Point_3 = typename Mesh::Point_3;
+  using Index = typename Mesh::Index;
+  Text_reader r(text, name);
+  Mesh mesh;
+  std::vector<std::string_view> f;
+
+  // ---- header and counts
+  if (!r.next_line(f)) r.fail("empty file: expected the numbers of vertices and tetrahedra");
+  std::size_t first = 0;
+  {
+    long long dummy;
+    if (parse_integer(f[0], dummy) != nullptr) {
+      if (!iequals(f[0], "OFF") && !iequals(f[0], "TOFF"))
+        r.fail("expected an 'OFF' header or the number of vertices, found " + quote(f[0]));
+      first = 1;
+    }
+  }
+  std::vector<long long> counts;
+  const auto take_counts = [&](std::size_t from, const char* expected) {
+    if (f.size() - from > 2 - counts.size())
+      r.fail(std::string("expected ") + expected + ", found " + std::to_string(f.size() - from) + " values");
+    for (std::size_t i = from; i < f.size(); ++i) {
+      long long c;
+      if (const char* why = parse_integer(f[i], c)) r.fail("count " + quote(f[i]) + " " + why);
+      if (c < 0) r.fail("negative count " + std::to_string(c));
+      counts.push_back(c);
+    }
+  };
+  take_counts(first, "'nV nT' or 'nV'");
+  while (counts.size() < 2) {
+    if (!r.next_line(f))
+      r.fail(counts.empty() ? "unexpected end of file, expected the number of vertices"
+                            : "unexpected end of file, expected the number of tetrahedra");
+    take_counts(0, counts.empty() ? "'nV nT' or 'nV'" : "a single number (the number of tetrahedra)");
+  }
+  if (static_cast<unsigned long long>(counts[0]) > max_vertices<Index>())
+    r.fail(std::to_string(counts[0]) + " vertices do not fit in the index type of the mesh");
+  if (static_cast<unsigned long long>(counts[1]) > std::numeric_limits<std::size_t>::max() / 64)
+    r.fail("number of tetrahedra " + std::to_string(counts[1]) + " is too large");
+  const std::size_t nv = static_cast<std::size_t>(counts[0]);
+  const std::size_t nt = static_cast<std::size_t>(counts[1]);
+
+  // ---- vertices
+  capped_reserve(mesh.points, nv, r.remaining_bytes(), 6);
+  std::size_t fields = 0;
+  std::vector<double> scalar;
+  for (std::size_t i = 0; i < nv; ++i) {
+    if (!r.next_line(f))
+      r.fail("unexpected end of file: " + std::to_string(i) + " vertices read, " + std::to_string(nv) +
+             " declared");
+    r.set_context("vertex", i + 1);
+    if (i == 0) {
+      if (f.size() != 3 && f.size() != 4)
+        r.fail("expected 'x y z' or 'x y z scalar', found " + std::to_string(f.size()) + " values");
+      fields = f.size();
+      if (fields == 4) capped_reserve(scalar, nv, r.remaining_bytes(), 8);
+    } else if (f.size() != fields) {
+      r.fail("expected " + std::to_string(fields) + " values like the first vertex line (" +
+             (fields == 4 ? "x y z scalar" : "x y z") + "), found " + std::to_string(f.size()));
+    }
+    double c[4];
+    for (std::size_t k = 0; k < fields; ++k)
+      if (const char* why = parse_double(f[k], c[k]))
+        r.fail((k < 3 ? "coordinate " : "scalar ") + quote(f[k]) + " " + why);
+    mesh.points.push_back(Point_3(c[0], c[1], c[2]));
+    if (fields == 4) scalar.push_back(c[3]);
+  }
+  r.clear_context();
+  if (fields == 4) mesh.point_data.push_back(Point_data_array{"scalar", std::move(scalar)});
+
+  // ---- tetrahedra
+  capped_reserve(mesh.tetrahedra, nt, r.remaining_bytes(), 8);
+  bool count_column = false;
+  for (std::size_t i = 0; i < nt; ++i) {
+    if (!r.next_line(f))
+      r.fail("unexpected end of file: " + std::to_string(i) + " tetrahedra read, " + std::to_string(nt) +
+             " declared");
+    r.set_context("tetrahedron", i + 1);
+    if (i == 0) {
+      if (f.size() == 5 && f[0] == "4")
+        count_column = true;
+      else if (f.size() != 4)
+        r.fail("expected 4 vertex indices (optionally preceded by the count 4), found " +
+               std::to_string(f.size()) + " values");
+    }
+    if (f.size() != (count_column ? 5u : 4u))
+      r.fail(std::string("expected ") +
+             (count_column ? "'4 a b c d' like the first tetrahedron line" : "4 vertex indices") +
+             ", found " + std::to_string(f.size()) + " values");
+    if (count_column && f[0] != "4") r.fail("expected the vertex count 4 first, found " + quote(f[0]));
+    typename Mesh::Tetrahedron t;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::string_view tok = f[k + (count_column ? 1 : 0)];
+      long long v;
+      if (const char* why = parse_integer(tok, v)) r.fail("vertex index " + quote(tok) + " " + why);
+      if (v < 0 || static_cast<unsigned long long>(v) >= nv)
+        r.fail("vertex index " + std::to_string(v) + " out of range (0-based, " + std::to_string(nv) +
+               " vertices)");
+      t[k] = static_cast<Index>(v);
+    }
+    mesh.tetrahedra.push_back(t);
+  }
+  r.clear_context();
+  if (r.next_line(f)) r.fail("unexpected data after the " + std::to_string(nt) + " declared tetrahedra");
+  result = std::move(mesh);
+}
+
+} // namespace internal
+
+/// \ingroup PkgPRStarOctreeIO
+/// Reads a tet-OFF text from a stream; `name` is used in error messages.  See
+/// `read_tet_off(const std::string&, Mesh&)`.
+template <class Mesh>
+void read_tet_off(std::istream& in, Mesh& mesh, const std::string& name = "<stream>") {
+  const std::string text = internal::load_stream(in, name);
+  internal::read_tet_off_text(text, name, mesh);
+}
+
+/// \ingroup PkgPRStarOctreeIO
+/// Reads a tetrahedral mesh from a tet-OFF file (`.off`, `.ts`, as used by unstructured volume
+/// renderers):
+/// - an optional header line `OFF` or `TOFF` (the counts may follow on the same line);
+/// - the counts: `nV nT` on one line, or `nV` on a line and `nT` on the next;
+/// - `nV` vertex lines `x y z` or `x y z scalar`: the first vertex line decides, all must then
+///   have the same number of values; the scalars become the point-data array `scalar`;
+/// - `nT` tetrahedron lines `a b c d` (0-based), or `4 a b c d` when the first one has that
+///   leading count column (then all must).
+///
+/// `#` starts a comment, blank lines are ignored.  Any non-comment line after the declared
+/// tetrahedra is an error (the counts do not match the data: a sign of corruption).
+/// Negatively oriented tetrahedra are kept as listed.
+///
+/// \throws Read_error on any problem; `mesh` is then left unchanged.  It is replaced on success.
+template <class Mesh>
+void read_tet_off(const std::string& filename, Mesh& mesh) {
+  const std::string text = internal::load_file(filename);
+  internal::read_tet_off_text(text, filename, mesh);
+}
+
+/// \ingroup PkgPRStarOctreeIO
+/// Writes `mesh` as tet-OFF to a stream: a line `nV nT`, the vertex lines `x y z [scalar]` (the
+/// scalar being the first point-data array of the mesh, when it has one), the tetrahedron lines
+/// `a b c d` (0-based).  Numbers are written with the shortest form that reads back exactly.  The
+/// labels and the other point-data arrays are not written.
+/// \throws Write_error when the stream fails or the mesh is inconsistent.
+template <class Mesh>
+void write_tet_off(std::ostream& out, const Mesh& mesh, const std::string& name = "<stream>") {
+  internal::check_mesh_for_writing(mesh, name);
+  const auto* scalar = mesh.point_data.empty() ? nullptr : &mesh.point_data.front().values;
+  std::string buf;
+  internal::append_integer(buf, mesh.points.size());
+  buf += ' ';
+  internal::append_integer(buf, mesh.tetrahedra.size());
+  buf += '\n';
+  for (std::size_t i = 0; i < mesh.points.size(); ++i) {
+    const auto& p = mesh.points[i];
+    internal::append_double(buf, CGAL::to_double(p.x()));
+    buf += ' ';
+    internal::append_double(buf, CGAL::to_double(p.y()));
+    buf += ' ';
+    internal::append_double(buf, CGAL::to_double(p.z()));
+    if (scalar) {
+      buf += ' ';
+      internal::append_double(buf, (*scalar)[i]);
+    }
+    buf += '\n';
+    internal::flush_buffer(out, buf, name);
+  }
+  for (const auto& t : mesh.tetrahedra) {
+    for (int k = 0; k < 4; ++k) {
+      internal::append_integer(buf, static_cast<unsigned long long>(t[k]));
+      buf += (k == 3 ? '\n' : ' ');
+    }
+    internal::flush_buffer(out, buf, name);
+  }
+  internal::flush_buffer(out, buf, name, true);
+}
+
+/// \ingroup PkgPRStarOctreeIO
+/// Writes `mesh` to the tet-OFF file `filename`; see `write_tet_off(std::ostream&, const Mesh&, const
+/// std::string&)`. \throws Write_error when the file cannot be written or the mesh is inconsistent.
+template <class Mesh>
+void write_tet_off(const std::string& filename, const Mesh& mesh) {
+  internal::check_mesh_for_writing(mesh, filename);
+  std::ofstream out;
+  internal::open_for_writing(out, filename);
+  write_tet_off(out, mesh, filename);
+  internal::close_written(out, filename);
+}
+
+} // namespace IO
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_IO_TET_OFF_H
