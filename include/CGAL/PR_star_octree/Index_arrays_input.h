@@ -1,0 +1,109 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_INDEX_ARRAYS_INPUT_H
+#define CGAL_PR_STAR_OCTREE_INDEX_ARRAYS_INPUT_H
+
+#include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
+
+#include <array>
+#include <cstddef>
+#include <iterator>
+#include <type_traits>
+#include <utility>
+
+namespace CGAL {
+namespace PR_star_octree {
+
+/// \ingroup PkgPRStarOctreeRef
+/// Tag standing for "no scalar field" in `Index_arrays_input`.
+struct No_scalar_field {};
+
+/// \ingroup PkgPRStarOctreeRef
+/// \cgalModels `PRStarOctreeInputMesh`
+///
+/// Adapts plain index arrays: any random-access range of points, any random-access range of
+/// tetrahedra (each a random-access container of four integer vertex indices, 0-based) and,
+/// optionally, a random-access range with one scalar per vertex.  The ranges are referenced,
+/// not copied: they must outlive the adapter.
+///
+/// \tparam PointRange random-access range whose value type has `x()`, `y()`, `z()`
+/// \tparam TetrahedronRange random-access range of 4-index arrays (`std::array<I,4>`, `std::vector<I>`, ...)
+/// \tparam ScalarRange random-access range of values convertible to `double`, or `No_scalar_field`
+template <class PointRange, class TetrahedronRange, class ScalarRange = No_scalar_field>
+class Index_arrays_input {
+public:
+  using Point_3 = typename std::decay<decltype(*std::begin(std::declval<const PointRange&>()))>::type;
+
+  Index_arrays_input(const PointRange& points, const TetrahedronRange& tetrahedra)
+      : points_(&points), tetrahedra_(&tetrahedra), scalars_(nullptr) {}
+
+  Index_arrays_input(const PointRange& points, const TetrahedronRange& tetrahedra, const ScalarRange& scalars)
+      : points_(&points), tetrahedra_(&tetrahedra), scalars_(&scalars) {}
+
+  std::size_t number_of_vertices() const { return static_cast<std::size_t>(std::size(*points_)); }
+  std::size_t number_of_tetrahedra() const { return static_cast<std::size_t>(std::size(*tetrahedra_)); }
+
+  const Point_3& point(std::size_t i) const { return std::begin(*points_)[i]; }
+
+  std::array<std::size_t, 4> tetrahedron(std::size_t t) const {
+    const auto& c = std::begin(*tetrahedra_)[t];
+    auto it = std::begin(c);
+    return {{static_cast<std::size_t>(it[0]), static_cast<std::size_t>(it[1]),
+             static_cast<std::size_t>(it[2]), static_cast<std::size_t>(it[3])}};
+  }
+
+  bool has_scalar_field() const {
+    if constexpr (std::is_same<ScalarRange, No_scalar_field>::value)
+      return false;
+    else
+      return scalars_ != nullptr;
+  }
+
+  double scalar(std::size_t i) const {
+    if constexpr (std::is_same<ScalarRange, No_scalar_field>::value) {
+      (void)i;
+      return 0.;
+    } else {
+      return static_cast<double>(std::begin(*scalars_)[i]);
+    }
+  }
+
+private:
+  const PointRange* points_;
+  const TetrahedronRange* tetrahedra_;
+  const ScalarRange* scalars_;
+};
+
+/// \ingroup PkgPRStarOctreeRef
+/// Adapts index arrays without a scalar field.
+template <class PointRange, class TetrahedronRange>
+Index_arrays_input<PointRange, TetrahedronRange> make_input(const PointRange& points,
+                                                            const TetrahedronRange& tetrahedra) {
+  return Index_arrays_input<PointRange, TetrahedronRange>(points, tetrahedra);
+}
+
+/// \ingroup PkgPRStarOctreeRef
+/// Adapts index arrays with one scalar per vertex.
+template <class PointRange, class TetrahedronRange, class ScalarRange>
+Index_arrays_input<PointRange, TetrahedronRange, ScalarRange>
+make_input(const PointRange& points, const TetrahedronRange& tetrahedra, const ScalarRange& scalars) {
+  return Index_arrays_input<PointRange, TetrahedronRange, ScalarRange>(points, tetrahedra, scalars);
+}
+
+/// \ingroup PkgPRStarOctreeRef
+/// Adapts an `Indexed_tetrahedral_mesh`; its first point-data array, if any, is the scalar field.
+template <class P, class I>
+Index_arrays_input<std::vector<P>, std::vector<std::array<I, 4>>, std::vector<double>>
+make_input(const Indexed_tetrahedral_mesh<P, I>& mesh) {
+  using Result = Index_arrays_input<std::vector<P>, std::vector<std::array<I, 4>>, std::vector<double>>;
+  if (const Point_data_array* s = mesh.scalar_field()) return Result(mesh.points, mesh.tetrahedra, s->values);
+  return Result(mesh.points, mesh.tetrahedra);
+}
+
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_INDEX_ARRAYS_INPUT_H

@@ -1,0 +1,125 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_INTERNAL_CONCEPT_CHECKS_H
+#define CGAL_PR_STAR_OCTREE_INTERNAL_CONCEPT_CHECKS_H
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+namespace CGAL {
+namespace PR_star_octree {
+namespace internal {
+
+// Detection idiom (C++17): each trait is true when the expression or nested type exists.
+template <class...>
+using void_t = void;
+
+#define CGAL_PR_STAR_OCTREE_DETECT_TYPE(NAME)                                                                \
+  template <class T, class = void>                                                                           \
+  struct has_type_##NAME : std::false_type {};                                                               \
+  template <class T>                                                                                         \
+  struct has_type_##NAME<T, void_t<typename T::NAME>> : std::true_type {};
+
+CGAL_PR_STAR_OCTREE_DETECT_TYPE(FT)
+CGAL_PR_STAR_OCTREE_DETECT_TYPE(Point_3)
+CGAL_PR_STAR_OCTREE_DETECT_TYPE(Orientation_3)
+#undef CGAL_PR_STAR_OCTREE_DETECT_TYPE
+
+template <class T, class = void>
+struct has_orientation_3_object : std::false_type {};
+template <class T>
+struct has_orientation_3_object<T, void_t<decltype(std::declval<const T&>().orientation_3_object())>>
+    : std::true_type {};
+
+template <class T, class = void>
+struct point_has_coordinates : std::false_type {};
+template <class T>
+struct point_has_coordinates<T, void_t<decltype(CGAL::to_double(std::declval<const T&>().x())),
+                                       decltype(CGAL::to_double(std::declval<const T&>().y())),
+                                       decltype(CGAL::to_double(std::declval<const T&>().z()))>>
+    : std::true_type {};
+
+template <class GT, bool has_point = has_type_Point_3<GT>::value>
+struct traits_point_has_coordinates : std::false_type {};
+template <class GT>
+struct traits_point_has_coordinates<GT, true> : point_has_coordinates<typename GT::Point_3> {};
+
+/// Checks the concept `PRStarOctreeTraits`; each failure is one readable `static_assert`.
+template <class GT>
+struct Check_geom_traits {
+  static_assert(has_type_FT<GT>::value,
+                "PR_star_octree_3: the geometric traits class must provide a nested number type FT "
+                "(see the concept PRStarOctreeTraits; a CGAL kernel such as "
+                "Exact_predicates_inexact_constructions_kernel is a model)");
+  static_assert(has_type_Point_3<GT>::value,
+                "PR_star_octree_3: the geometric traits class must provide a nested type Point_3 "
+                "(see the concept PRStarOctreeTraits)");
+  static_assert(traits_point_has_coordinates<GT>::value,
+                "PR_star_octree_3: the geometric traits class must provide a Point_3 with x(), y(), z() "
+                "(see the concept PRStarOctreeTraits)");
+  static_assert(has_type_Orientation_3<GT>::value && has_orientation_3_object<GT>::value,
+                "PR_star_octree_3: the geometric traits class must provide Orientation_3 and "
+                "orientation_3_object() (an exact predicate; see the concept PRStarOctreeTraits)");
+  static constexpr bool value = true;
+};
+
+template <class T, class = void>
+struct has_number_of_vertices : std::false_type {};
+template <class T>
+struct has_number_of_vertices<T, void_t<decltype(std::size_t(std::declval<const T&>().number_of_vertices()))>>
+    : std::true_type {};
+
+template <class T, class = void>
+struct has_number_of_tetrahedra : std::false_type {};
+template <class T>
+struct has_number_of_tetrahedra<
+    T, void_t<decltype(std::size_t(std::declval<const T&>().number_of_tetrahedra()))>> : std::true_type {};
+
+template <class T, class = void>
+struct has_point_access : std::false_type {};
+template <class T>
+struct has_point_access<T, void_t<decltype(std::declval<const T&>().point(std::size_t(0)))>>
+    : point_has_coordinates<std::decay_t<decltype(std::declval<const T&>().point(std::size_t(0)))>> {};
+
+template <class T, class = void>
+struct has_tetrahedron_access : std::false_type {};
+template <class T>
+struct has_tetrahedron_access<T, void_t<decltype(std::declval<const T&>().tetrahedron(std::size_t(0))[3])>>
+    : std::true_type {};
+
+template <class T, class = void>
+struct has_scalar_access : std::false_type {};
+template <class T>
+struct has_scalar_access<T, void_t<decltype(bool(std::declval<const T&>().has_scalar_field())),
+                                   decltype(double(std::declval<const T&>().scalar(std::size_t(0))))>>
+    : std::true_type {};
+
+/// Checks the concept `PRStarOctreeInputMesh`.
+template <class InputMesh>
+struct Check_input_mesh {
+  static_assert(has_number_of_vertices<InputMesh>::value && has_number_of_tetrahedra<InputMesh>::value,
+                "PR_star_octree_3: the input mesh must provide number_of_vertices() and "
+                "number_of_tetrahedra() (see the concept PRStarOctreeInputMesh; use "
+                "CGAL::PR_star_octree::make_input() to adapt index arrays or a C3T3)");
+  static_assert(has_point_access<InputMesh>::value,
+                "PR_star_octree_3: the input mesh must provide point(i) returning a point with x(), y(), z() "
+                "(see the concept PRStarOctreeInputMesh)");
+  static_assert(has_tetrahedron_access<InputMesh>::value,
+                "PR_star_octree_3: the input mesh must provide tetrahedron(t) returning four vertex indices "
+                "(see the concept PRStarOctreeInputMesh)");
+  static_assert(has_scalar_access<InputMesh>::value,
+                "PR_star_octree_3: the input mesh must provide has_scalar_field() and scalar(i) "
+                "(see the concept PRStarOctreeInputMesh)");
+  static constexpr bool value = true;
+};
+
+} // namespace internal
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_INTERNAL_CONCEPT_CHECKS_H

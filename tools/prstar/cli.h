@@ -1,0 +1,318 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Small command-line helpers of the prstar tool: argument parsing, JSON and table output, progress.
+
+#ifndef PRSTAR_CLI_H
+#define PRSTAR_CLI_H
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace prstar {
+
+/// A usage error: reported with the subcommand's usage line, exit code 2.
+struct Usage_error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Parses `--name value`, `--name=value`, `-o value`, flags and positional arguments.
+class Arguments {
+public:
+  /// `flags`: options without a value; `options`: options with a value (names with dashes).
+  Arguments(int argc, char** argv, int first, const std::vector<std::string>& flags,
+            const std::vector<std::string>& options) {
+    for (int i = first; i < argc; ++i) {
+      std::string a = argv[i];
+      if (a.size() > 1 && a[0] == '-' && !is_number(a)) {
+        std::string value;
+        bool has_value = false;
+        const std::size_t eq = a.find('=');
+        if (a.rfind("--", 0) == 0 && eq != std::string::npos) {
+          value = a.substr(eq + 1);
+          a = a.substr(0, eq);
+          has_value = true;
+        }
+        if (contains(flags, a)) {
+          if (has_value) throw Usage_error("option " + a + " takes no value");
+          flags_.push_back(a);
+        } else if (contains(options, a)) {
+          if (!has_value) {
+            if (i + 1 >= argc) throw Usage_error("option " + a + " needs a value");
+            value = argv[++i];
+          }
+          if (values_.count(a)) throw Usage_error("option " + a + " given twice");
+          values_[a] = value;
+        } else
+          throw Usage_error("unknown option " + a);
+      } else
+        positional_.push_back(a);
+    }
+  }
+
+  bool flag(const std::string& name) const { return contains(flags_, name); }
+  bool has(const std::string& name) const { return values_.count(name) != 0; }
+  std::string get(const std::string& name, const std::string& fallback = "") const {
+    auto it = values_.find(name);
+    return it == values_.end() ? fallback : it->second;
+  }
+  double get_double(const std::string& name, double fallback) const {
+    if (!has(name)) return fallback;
+    const std::string s = get(name);
+    std::size_t used = 0;
+    double d = 0;
+    try {
+      d = std::stod(s, &used);
+    } catch (...) {
+      used = 0;
+    }
+    if (used != s.size() || !std::isfinite(d))
+      throw Usage_error("option " + name + ": '" + s + "' is not a number");
+    return d;
+  }
+  const std::vector<std::string>& positional() const { return positional_; }
+
+private:
+  static bool contains(const std::vector<std::string>& v, const std::string& s) {
+    for (const std::string& x : v)
+      if (x == s) return true;
+    return false;
+  }
+  static bool is_number(const std::string& s) {
+    return s.size() > 1 && (std::isdigit(static_cast<unsigned char>(s[1])) || s[1] == '.');
+  }
+  std::vector<std::string> flags_;
+  std::map<std::string, std::string> values_;
+  std::vector<std::string> positional_;
+};
+
+/// Parses a bucket threshold: a positive integer or `inf`.
+inline std::size_t parse_bucket_size(const std::string& s) {
+  if (s == "inf" || s == "infinity" || s == "Inf") return (std::numeric_limits<std::size_t>::max)();
+  std::size_t used = 0;
+  unsigned long long v = 0;
+  try {
+    if (!s.empty() && s[0] != '-') v = std::stoull(s, &used);
+  } catch (...) {
+    used = 0;
+  }
+  if (used == 0 || used != s.size() || v == 0)
+    throw Usage_error("--kv: '" + s + "' is not a positive integer or 'inf'");
+  return static_cast<std::size_t>(v);
+}
+
+inline std::string bucket_size_string(std::size_t kv) {
+  return kv == (std::numeric_limits<std::size_t>::max)() ? "inf" : std::to_string(kv);
+}
+
+/// A minimal JSON writer (objects, arrays, numbers, strings), enough for stable machine output.
+class Json {
+public:
+  Json& begin_object() { return open('{'); }
+  Json& end_object() { return close('}'); }
+  Json& begin_array() { return open('['); }
+  Json& end_array() { return close(']'); }
+  Json& key(const std::string& k) {
+    comma();
+    out_ << quote(k) << ": ";
+    after_key_ = true;
+    return *this;
+  }
+  template <class T>
+  Json& value(const T& v) {
+    comma();
+    if constexpr (std::is_same<T, bool>::value)
+      out_ << (v ? "true" : "false");
+    else if constexpr (std::is_floating_point<T>::value) {
+      if (std::isfinite(v)) {
+        std::ostringstream s;
+        s << std::setprecision(std::numeric_limits<double>::max_digits10) << v;
+        out_ << s.str();
+      } else
+        out_ << "null";
+    } else if constexpr (std::is_arithmetic<T>::value)
+      out_ << v;
+    else
+      out_ << quote(std::string(v));
+    return *this;
+  }
+  Json& null() {
+    comma();
+    out_ << "null";
+    return *this;
+  }
+  template <class T>
+  Json& field(const std::string& k, const T& v) {
+    key(k);
+    return value(v);
+  }
+  std::string str() const { return out_.str(); }
+
+private:
+  Json& open(char c) {
+    comma();
+    out_ << c;
+    first_.push_back(true);
+    return *this;
+  }
+  Json& close(char c) {
+    first_.pop_back();
+    out_ << c;
+    return *this;
+  }
+  void comma() {
+    if (after_key_) {
+      after_key_ = false;
+      return;
+    }
+    if (!first_.empty()) {
+      if (!first_.back()) out_ << ", ";
+      first_.back() = false;
+    }
+  }
+  static std::string quote(const std::string& s) {
+    std::string r = "\"";
+    for (char c : s) {
+      switch (c) {
+      case '"':
+        r += "\\\"";
+        break;
+      case '\\':
+        r += "\\\\";
+        break;
+      case '\n':
+        r += "\\n";
+        break;
+      case '\t':
+        r += "\\t";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", c);
+          r += buf;
+        } else
+          r += c;
+      }
+    }
+    return r + "\"";
+  }
+  std::ostringstream out_;
+  std::vector<bool> first_;
+  bool after_key_ = false;
+};
+
+/// A plain-text table with right-aligned numeric columns.
+class Table {
+public:
+  explicit Table(std::vector<std::string> header) : header_(std::move(header)) {}
+  void add(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
+  std::string str() const {
+    std::vector<std::size_t> w(header_.size(), 0);
+    for (std::size_t i = 0; i < header_.size(); ++i) w[i] = header_[i].size();
+    for (const auto& r : rows_)
+      for (std::size_t i = 0; i < r.size() && i < w.size(); ++i) w[i] = std::max(w[i], r[i].size());
+    std::ostringstream s;
+    auto line = [&](const std::vector<std::string>& r) {
+      for (std::size_t i = 0; i < w.size(); ++i) {
+        const std::string c = i < r.size() ? r[i] : "";
+        s << (i ? "  " : "") << (i == 0 ? std::left : std::right) << std::setw(static_cast<int>(w[i])) << c;
+      }
+      s << '\n';
+    };
+    line(header_);
+    std::size_t total = 0;
+    for (std::size_t x : w) total += x;
+    s << std::string(total + 2 * (w.size() - 1), '-') << '\n';
+    for (const auto& r : rows_) line(r);
+    return s.str();
+  }
+
+private:
+  std::vector<std::string> header_;
+  std::vector<std::vector<std::string>> rows_;
+};
+
+inline std::string fixed(double v, int digits) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << v;
+  return s.str();
+}
+
+/// Human-readable byte count.
+inline std::string human_bytes(double b) {
+  const char* unit[] = {"B", "KiB", "MiB", "GiB", "TiB"};
+  int u = 0;
+  while (b >= 1024 && u < 4) {
+    b /= 1024;
+    ++u;
+  }
+  return fixed(b, u == 0 ? 0 : 1) + " " + unit[u];
+}
+
+/// Progress on stderr for work that can take more than a second: a line per phase, redrawn in
+/// place with a bar when a fraction is known.  Silent when stderr is not a terminal or when quiet.
+class Progress {
+public:
+  explicit Progress(bool quiet) : enabled_(!quiet && isatty(2)) {}
+  ~Progress() { finish(); }
+  void phase(const std::string& name) {
+    finish();
+    name_ = name;
+    start_ = std::chrono::steady_clock::now();
+    active_ = true;
+    draw(-1);
+  }
+  /// `fraction` in [0,1]; redraws at most every 100 ms.
+  void update(double fraction) {
+    if (!active_) return;
+    auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::milliseconds(100)) return;
+    last_ = now;
+    draw(fraction);
+  }
+  void finish() {
+    if (!active_) return;
+    active_ = false;
+    if (!enabled_) return;
+    std::fprintf(stderr, "\r\033[K%s ... done (%.2f s)\n", name_.c_str(), seconds());
+  }
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+private:
+  void draw(double fraction) {
+    if (!enabled_) return;
+    if (fraction < 0) {
+      std::fprintf(stderr, "\r\033[K%s ...", name_.c_str());
+    } else {
+      const int width = 30, filled = static_cast<int>(fraction * width + 0.5);
+      std::fprintf(stderr, "\r\033[K%s [%s%s] %3d%%", name_.c_str(), std::string(filled, '#').c_str(),
+                   std::string(width - filled, '.').c_str(), static_cast<int>(fraction * 100 + 0.5));
+    }
+    std::fflush(stderr);
+  }
+  bool enabled_;
+  bool active_ = false;
+  std::string name_;
+  std::chrono::steady_clock::time_point start_, last_;
+};
+
+} // namespace prstar
+
+#endif // PRSTAR_CLI_H
