@@ -320,7 +320,7 @@ int main(int argc, char** argv) {
       std::cout << c.usage;
       if (command == "generate") {
         std::cout << "\nshapes:\n";
-        for (const auto& s : prstar::implicit_shapes()) std::cout << "  " << s << '\n';
+        for (const auto& s : prstar::implicit_shapes()) std::cout << "  " << s.first << ": " << s.second << '\n';
       }
       return 0;
     }
