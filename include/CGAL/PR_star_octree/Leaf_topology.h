@@ -1,0 +1,539 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_LEAF_TOPOLOGY_H
+#define CGAL_PR_STAR_OCTREE_LEAF_TOPOLOGY_H
+
+/// \file Leaf_topology.h
+/// Local topological relations of one leaf of a PR-star octree (paper Section 6), rebuilt from the
+/// leaf's vertex range and tetrahedron list only, and the streaming visitor over all leaves.
+
+#include <CGAL/PR_star_octree.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace PR_star_octree {
+
+/// \ingroup PkgPRStarOctreeRef
+/// The local relations a `Leaf_topology` can build; combine with `|`.
+enum Relations : unsigned {
+  VERTEX_TETRAHEDRA = 1u,     ///< VT (Algorithm 1): the tetrahedra incident in each vertex of the leaf
+  TETRAHEDRON_ADJACENCY = 2u, ///< TT (Algorithm 2): the tetrahedra across the faces of the leaf's tetrahedra
+  VERTEX_VERTICES = 4u,       ///< VV: the vertices adjacent to each vertex of the leaf
+  EDGES = 8u,                 ///< the edges with a vertex in the leaf, their stars in cyclic order, VE
+  TRIANGLES = 16u,            ///< the triangles with a vertex in the leaf and their incident tetrahedra
+  ALL_RELATIONS = 31u
+};
+
+/// \ingroup PkgPRStarOctreeRef
+///
+/// The local topological data structure of one leaf `n` of a `PR_star_octree_3`, built from the
+/// vertex range `[vertex_begin, vertex_end)` of `n` and its list of tetrahedra only.  Every relation
+/// is exact for the simplices that have at least one vertex in the leaf (their stars are all in the
+/// leaf's list).  All indices are in the octree's numbering; map them back with
+/// `PR_star_octree_3::original_vertex()` and `original_tetrahedron()`.
+///
+/// Edges and triangles are *owned* by the leaf holding their smallest vertex: over a traversal of
+/// all leaves, reporting only owned simplices reports each exactly once.
+///
+/// An object can be rebuilt for leaf after leaf: its buffers are reused, so the memory is bounded
+/// by the largest leaf, not by the mesh.
+template <class Octree>
+class Leaf_topology {
+public:
+  using Index = typename Octree::Index;
+  using Node_index = typename Octree::Node_index;
+  using Tetrahedron = typename Octree::Tetrahedron;
+  template <class T>
+  using Range = typename Octree::template Range<T>;
+
+  /// adjacency across a face with a single tetrahedron (on the boundary of the mesh)
+  static constexpr Index no_neighbor = (std::numeric_limits<Index>::max)();
+  /// adjacency across a face with no vertex in the leaf: not reconstructed locally
+  static constexpr Index unknown_neighbor = (std::numeric_limits<Index>::max)() - 1;
+
+  struct Edge {
+    Index v0, v1; ///< `v0 < v1`
+  };
+
+  Leaf_topology() = default;
+  Leaf_topology(const Octree& tree, Node_index leaf, unsigned relations = ALL_RELATIONS) {
+    build(tree, leaf, relations);
+  }
+
+  /// (Re)builds the relations `relations` (a combination of `Relations`) for leaf `leaf`.
+  void build(const Octree& tree, Node_index leaf, unsigned relations);
+
+  /// \name The leaf
+  /// @{
+  const Octree& octree() const { return *tree_; }
+  Node_index leaf() const { return leaf_; }
+  unsigned relations() const { return relations_; }
+  Index vertex_begin() const { return vb_; }
+  Index vertex_end() const { return ve_; }
+  bool is_local_vertex(Index v) const { return vb_ <= v && v < ve_; }
+  /// the tetrahedra of the leaf (its list); "local tetrahedron `i`" is `tetrahedra()[i]`
+  Range<Index> tetrahedra() const { return tree_->leaf_tetrahedra(leaf_); }
+  /// @}
+
+  /// \name Vertex-tetrahedra (VT)
+  /// @{
+  /// the tetrahedra incident in `v` (a vertex of the leaf), in increasing index order
+  Range<Index> vertex_tetrahedra(Index v) const { return csr(vt_offsets_, vt_, v - vb_); }
+  /// the same, as local tetrahedron positions
+  Range<Index> vertex_local_tetrahedra(Index v) const { return csr(vt_offsets_, vt_local_, v - vb_); }
+  /// @}
+
+  /// \name Tetrahedron-tetrahedra (TT)
+  /// @{
+  /// the tetrahedra across the faces of local tetrahedron `i` (`[k]` is across the face opposite
+  /// vertex `k`): a tetrahedron index, `no_neighbor` on the mesh boundary, or `unknown_neighbor`
+  /// when the face has no vertex in the leaf
+  const std::array<Index, 4>& tetrahedron_adjacency(std::size_t i) const { return tt_[i]; }
+  /// @}
+
+  /// \name Vertex-vertices (VV)
+  /// @{
+  /// the vertices adjacent to `v` (a vertex of the leaf), in increasing order
+  Range<Index> vertex_vertices(Index v) const { return csr(vv_offsets_, vv_, v - vb_); }
+  /// @}
+
+  /// \name Edges
+  /// @{
+  /// the edges with at least one vertex in the leaf, sorted by `(v0, v1)`
+  std::size_t number_of_edges() const { return edges_.size(); }
+  const Edge& edge(std::size_t e) const { return edges_[e]; }
+  /// whether the leaf owns edge `e` (its smaller vertex is in the leaf)
+  bool owns_edge(std::size_t e) const { return is_local_vertex(edges_[e].v0); }
+  /// the star of edge `e`: its tetrahedra in cyclic order around it (right-hand rule around
+  /// `v0 -> v1`); for a boundary edge the fan runs from one boundary face to the other
+  Range<Index> edge_tetrahedra(std::size_t e) const { return csr(et_offsets_, et_, e); }
+  /// the link of edge `e`: the vertices opposite it, in the same cyclic order (one more vertex than
+  /// tetrahedra when the edge is on the boundary)
+  Range<Index> edge_link(std::size_t e) const { return csr(el_offsets_, el_, e); }
+  /// whether the star of edge `e` is an open fan (the edge is on the boundary of the mesh)
+  bool is_boundary_edge(std::size_t e) const { return edge_flags_[e] & boundary_flag; }
+  /// whether the star of edge `e` is neither a closed cycle nor an open fan (non-manifold)
+  bool is_nonmanifold_edge(std::size_t e) const { return edge_flags_[e] & nonmanifold_flag; }
+  /// the edges incident in `v` (a vertex of the leaf), as edge ids
+  Range<Index> vertex_edges(Index v) const { return csr(vedge_offsets_, vedge_, v - vb_); }
+  /// @}
+
+  /// \name Triangles
+  /// @{
+  /// the triangles with at least one vertex in the leaf, vertices sorted, triangles sorted
+  std::size_t number_of_triangles() const { return triangles_.size(); }
+  const std::array<Index, 3>& triangle(std::size_t f) const { return triangles_[f]; }
+  bool owns_triangle(std::size_t f) const { return is_local_vertex(triangles_[f][0]); }
+  /// the tetrahedra incident in triangle `f`: one on the boundary, two inside, more if non-manifold
+  Range<Index> triangle_tetrahedra(std::size_t f) const { return csr(ft_offsets_, ft_, f); }
+  /// @}
+
+  /// \name Links (computed on demand from VT)
+  /// @{
+  /// the link of vertex `v` of the leaf: the face `(a, b, c)` opposite `v` in each tetrahedron of
+  /// its star, ordered so that `(v, a, b, c)` is positively oriented
+  template <class OutputIterator>
+  OutputIterator vertex_link(Index v, OutputIterator out) const {
+    for (Index t : vertex_tetrahedra(v)) {
+      const Tetrahedron& c = tree_->tetrahedron(t);
+      const int k = position(c, v);
+      // (c0,c1,c2,c3) is positive; each row is an even permutation putting c[k] first.
+      static const int opposite[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+      *out++ = std::array<Index, 3>{{c[opposite[k][0]], c[opposite[k][1]], c[opposite[k][2]]}};
+    }
+    return out;
+  }
+  /// @}
+
+  /// the bytes held by this local structure (its buffers' capacities)
+  std::size_t memory_bytes() const {
+    auto b = [](const auto& v) {
+      return v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type);
+    };
+    return b(vt_offsets_) + b(vt_) + b(vt_local_) + b(tt_) + b(vv_offsets_) + b(vv_) + b(edges_) +
+           b(edge_flags_) + b(et_offsets_) + b(et_) + b(el_offsets_) + b(el_) + b(vedge_offsets_) +
+           b(vedge_) + b(triangles_) + b(ft_offsets_) + b(ft_) + b(face_records_) + b(edge_records_) +
+           b(scratch_) + b(visited_);
+  }
+
+private:
+  static constexpr unsigned char boundary_flag = 1, nonmanifold_flag = 2;
+
+  static Range<Index> csr(const std::vector<Index>& offsets, const std::vector<Index>& data, std::size_t i) {
+    return {data.data() + offsets[i], data.data() + offsets[i + 1]};
+  }
+  static int position(const Tetrahedron& c, Index v) {
+    for (int k = 0; k < 4; ++k)
+      if (c[k] == v) return k;
+    return -1;
+  }
+
+  void build_vt();
+  void build_faces(bool adjacency, bool triangles);
+  void build_vv();
+  void build_edges();
+
+  struct Face_record {
+    std::array<Index, 3> v;
+    Index local;
+    int k;
+    bool operator<(const Face_record& o) const { return std::tie(v, local) < std::tie(o.v, o.local); }
+  };
+  struct Edge_record {
+    Index a, b, t;
+    bool operator<(const Edge_record& o) const { return std::tie(a, b, t) < std::tie(o.a, o.b, o.t); }
+  };
+
+  const Octree* tree_ = nullptr;
+  Node_index leaf_ = 0;
+  unsigned relations_ = 0;
+  Index vb_ = 0, ve_ = 0;
+
+  std::vector<Index> vt_offsets_, vt_, vt_local_;
+  std::vector<std::array<Index, 4>> tt_;
+  std::vector<Index> vv_offsets_, vv_;
+  std::vector<Edge> edges_;
+  std::vector<unsigned char> edge_flags_;
+  std::vector<Index> et_offsets_, et_, el_offsets_, el_, vedge_offsets_, vedge_;
+  std::vector<std::array<Index, 3>> triangles_;
+  std::vector<Index> ft_offsets_, ft_;
+  std::vector<Face_record> face_records_;
+  std::vector<Edge_record> edge_records_;
+  std::vector<Index> scratch_;
+  std::vector<unsigned char> visited_;
+};
+
+// ---------------------------------------------------------------------------------------------
+
+template <class Octree>
+void Leaf_topology<Octree>::build(const Octree& tree, Node_index leaf, unsigned relations) {
+  tree_ = &tree;
+  leaf_ = leaf;
+  vb_ = tree.node(leaf).vertex_begin;
+  ve_ = tree.node(leaf).vertex_end;
+  // Dependencies: VV and edges are built from VT.
+  if (relations & (VERTEX_VERTICES | EDGES)) relations |= VERTEX_TETRAHEDRA;
+  relations_ = relations;
+  if (relations & VERTEX_TETRAHEDRA) build_vt();
+  if (relations & (TETRAHEDRON_ADJACENCY | TRIANGLES))
+    build_faces(relations & TETRAHEDRON_ADJACENCY, relations & TRIANGLES);
+  if (relations & VERTEX_VERTICES) build_vv();
+  if (relations & EDGES) build_edges();
+}
+
+// Algorithm 1: one pass over the leaf's tetrahedra, counting then filling (CSR).
+template <class Octree>
+void Leaf_topology<Octree>::build_vt() {
+  const std::size_t nv = ve_ - vb_;
+  const Range<Index> tets = tetrahedra();
+  vt_offsets_.assign(nv + 1, 0);
+  for (Index t : tets)
+    for (Index v : tree_->tetrahedron(t))
+      if (v - vb_ < nv) ++vt_offsets_[v - vb_ + 1]; // unsigned wrap-around rejects v < vb_
+  for (std::size_t i = 0; i < nv; ++i) vt_offsets_[i + 1] += vt_offsets_[i];
+  vt_.resize(vt_offsets_[nv]);
+  vt_local_.resize(vt_offsets_[nv]);
+  scratch_.assign(vt_offsets_.begin(), vt_offsets_.end() - 1);
+  for (std::size_t i = 0; i < tets.size(); ++i) {
+    const Index t = tets[i];
+    for (Index v : tree_->tetrahedron(t))
+      if (v - vb_ < nv) {
+        const Index p = scratch_[v - vb_]++;
+        vt_[p] = t;
+        vt_local_[p] = static_cast<Index>(i);
+      }
+  }
+}
+
+// Algorithm 2 and the triangles: the faces with a vertex in the leaf, sorted and paired.
+template <class Octree>
+void Leaf_topology<Octree>::build_faces(bool adjacency, bool triangles) {
+  const Range<Index> tets = tetrahedra();
+  face_records_.clear();
+  if (adjacency)
+    tt_.assign(tets.size(), std::array<Index, 4>{
+                                {unknown_neighbor, unknown_neighbor, unknown_neighbor, unknown_neighbor}});
+  for (std::size_t i = 0; i < tets.size(); ++i) {
+    const Tetrahedron& c = tree_->tetrahedron(tets[i]);
+    for (int k = 0; k < 4; ++k) {
+      std::array<Index, 3> f{{c[(k + 1) & 3], c[(k + 2) & 3], c[(k + 3) & 3]}};
+      if (!is_local_vertex(f[0]) && !is_local_vertex(f[1]) && !is_local_vertex(f[2])) continue;
+      std::sort(f.begin(), f.end());
+      face_records_.push_back(Face_record{f, static_cast<Index>(i), k});
+    }
+  }
+  std::sort(face_records_.begin(), face_records_.end());
+  if (triangles) {
+    triangles_.clear();
+    ft_offsets_.assign(1, 0);
+    ft_.clear();
+  }
+  for (std::size_t a = 0; a < face_records_.size();) {
+    std::size_t b = a + 1;
+    while (b < face_records_.size() && face_records_[b].v == face_records_[a].v) ++b;
+    if (adjacency) {
+      if (b - a == 1)
+        tt_[face_records_[a].local][face_records_[a].k] = no_neighbor;
+      else if (b - a == 2) {
+        tt_[face_records_[a].local][face_records_[a].k] = tets[face_records_[a + 1].local];
+        tt_[face_records_[a + 1].local][face_records_[a + 1].k] = tets[face_records_[a].local];
+      } // non-manifold faces (3+ tetrahedra) keep unknown_neighbor: see triangle_tetrahedra()
+    }
+    if (triangles) {
+      triangles_.push_back(face_records_[a].v);
+      for (std::size_t r = a; r < b; ++r) ft_.push_back(tets[face_records_[r].local]);
+      ft_offsets_.push_back(static_cast<Index>(ft_.size()));
+    }
+    a = b;
+  }
+}
+
+template <class Octree>
+void Leaf_topology<Octree>::build_vv() {
+  const std::size_t nv = ve_ - vb_;
+  vv_offsets_.assign(1, 0);
+  vv_.clear();
+  for (std::size_t i = 0; i < nv; ++i) {
+    const Index v = static_cast<Index>(vb_ + i);
+    const std::size_t start = vv_.size();
+    for (Index t : vertex_tetrahedra(v))
+      for (Index w : tree_->tetrahedron(t))
+        if (w != v) vv_.push_back(w);
+    std::sort(vv_.begin() + start, vv_.end());
+    vv_.erase(std::unique(vv_.begin() + start, vv_.end()), vv_.end());
+    vv_offsets_.push_back(static_cast<Index>(vv_.size()));
+  }
+}
+
+template <class Octree>
+void Leaf_topology<Octree>::build_edges() {
+  // Every edge with a vertex in the leaf appears in the VT of that vertex.
+  const std::size_t nv = ve_ - vb_;
+  edge_records_.clear();
+  for (std::size_t i = 0; i < nv; ++i) {
+    const Index v = static_cast<Index>(vb_ + i);
+    for (Index t : vertex_tetrahedra(v))
+      for (Index w : tree_->tetrahedron(t)) {
+        if (w == v) continue;
+        // Record the edge once: from its smaller local vertex.
+        if (is_local_vertex(w) && w < v) continue;
+        edge_records_.push_back(Edge_record{(std::min)(v, w), (std::max)(v, w), t});
+      }
+  }
+  std::sort(edge_records_.begin(), edge_records_.end());
+
+  edges_.clear();
+  edge_flags_.clear();
+  et_offsets_.assign(1, 0);
+  et_.clear();
+  el_offsets_.assign(1, 0);
+  el_.clear();
+  struct Wing {
+    Index t, from, to;
+  };
+  std::vector<Wing> wings;
+  for (std::size_t a = 0; a < edge_records_.size();) {
+    std::size_t b = a + 1;
+    while (b < edge_records_.size() && edge_records_[b].a == edge_records_[a].a &&
+           edge_records_[b].b == edge_records_[a].b)
+      ++b;
+    const Index v0 = edge_records_[a].a, v1 = edge_records_[a].b;
+    // Each tetrahedron of the star is a directed edge of the link polygon, from wing to wing,
+    // oriented by the right-hand rule around v0 -> v1: (v0, v1, from, to) is positive.
+    wings.clear();
+    for (std::size_t r = a; r < b; ++r) {
+      const Tetrahedron& c = tree_->tetrahedron(edge_records_[r].t);
+      const int p0 = position(c, v0), p1 = position(c, v1);
+      Index w[2];
+      int pw[2], n = 0;
+      for (int k = 0; k < 4; ++k)
+        if (k != p0 && k != p1) {
+          w[n] = c[k];
+          pw[n++] = k;
+        }
+      // Parity of the permutation (p0, p1, pw0, pw1) of (0, 1, 2, 3).
+      const int perm[4] = {p0, p1, pw[0], pw[1]};
+      int inversions = 0;
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) inversions += perm[i] > perm[j];
+      if (inversions % 2 == 0)
+        wings.push_back(Wing{edge_records_[r].t, w[0], w[1]});
+      else
+        wings.push_back(Wing{edge_records_[r].t, w[1], w[0]});
+    }
+    // Chain the wings: start at a wing whose `from` is nobody's `to` (open fan), else at the
+    // smallest tetrahedron (wings are sorted by tetrahedron already).
+    unsigned char flags = 0;
+    std::size_t start = 0;
+    bool open = false;
+    for (std::size_t i = 0; i < wings.size() && !open; ++i) {
+      bool is_target = false;
+      for (const Wing& x : wings) is_target = is_target || x.to == wings[i].from;
+      if (!is_target) {
+        start = i;
+        open = true;
+      }
+    }
+    const std::size_t et_begin = et_.size();
+    std::size_t cur = start;
+    visited_.assign(wings.size(), 0);
+    el_.push_back(wings[cur].from);
+    for (std::size_t step = 0; step < wings.size(); ++step) {
+      visited_[cur] = 1;
+      et_.push_back(wings[cur].t);
+      const Index to = wings[cur].to;
+      if (step + 1 < wings.size() || open) el_.push_back(to);
+      std::size_t next = wings.size();
+      for (std::size_t i = 0; i < wings.size(); ++i)
+        if (wings[i].from == to) {
+          if (next != wings.size()) flags |= nonmanifold_flag; // two tetrahedra leave the same face
+          next = i;
+        }
+      // Stuck, or back to a visited tetrahedron before the end: several fans or cycles.
+      if (step + 1 < wings.size() && (next == wings.size() || visited_[next])) {
+        flags |= nonmanifold_flag;
+        break;
+      }
+      cur = next;
+    }
+    if (!open && cur != start) flags |= nonmanifold_flag;
+    if (flags & nonmanifold_flag) { // not a fan nor a cycle: keep the star in index order
+      et_.resize(et_begin);
+      el_.resize(el_offsets_.back());
+      for (const Wing& x : wings) {
+        et_.push_back(x.t);
+        el_.push_back(x.from);
+        el_.push_back(x.to);
+      }
+    }
+    if (open) flags |= boundary_flag;
+    edges_.push_back(Edge{v0, v1});
+    edge_flags_.push_back(flags);
+    et_offsets_.push_back(static_cast<Index>(et_.size()));
+    el_offsets_.push_back(static_cast<Index>(el_.size()));
+    a = b;
+  }
+
+  // VE: the edges of each vertex of the leaf.
+  vedge_offsets_.assign(nv + 1, 0);
+  for (const Edge& e : edges_) {
+    if (is_local_vertex(e.v0)) ++vedge_offsets_[e.v0 - vb_ + 1];
+    if (is_local_vertex(e.v1)) ++vedge_offsets_[e.v1 - vb_ + 1];
+  }
+  for (std::size_t i = 0; i < nv; ++i) vedge_offsets_[i + 1] += vedge_offsets_[i];
+  vedge_.resize(vedge_offsets_[nv]);
+  scratch_.assign(vedge_offsets_.begin(), vedge_offsets_.end() - 1);
+  for (std::size_t e = 0; e < edges_.size(); ++e) {
+    if (is_local_vertex(edges_[e].v0)) vedge_[scratch_[edges_[e].v0 - vb_]++] = static_cast<Index>(e);
+    if (is_local_vertex(edges_[e].v1)) vedge_[scratch_[edges_[e].v1 - vb_]++] = static_cast<Index>(e);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Streaming and random access
+// ---------------------------------------------------------------------------------------------
+
+/// \ingroup PkgPRStarOctreeRef
+/// Streams over the leaves of `tree` in depth-first order: for each leaf, builds the local
+/// relations `relations` (a combination of `Relations`), calls `f(const Leaf_topology<Octree>&)`,
+/// and discards them (the buffers are reused for the next leaf).
+template <class Octree, class Function>
+void for_each_leaf(const Octree& tree, unsigned relations, Function&& f) {
+  Leaf_topology<Octree> local;
+  for (typename Octree::Node_index leaf : tree.leaves()) {
+    local.build(tree, leaf, relations);
+    f(static_cast<const Leaf_topology<Octree>&>(local));
+  }
+}
+
+/// \ingroup PkgPRStarOctreeRef
+/// The star of vertex `v` (VT), by random access: finds the leaf of `v` and scans its list.
+/// Appends tetrahedron indices in increasing order to `out`.
+template <class Octree, class OutputIterator>
+OutputIterator vertex_star(const Octree& tree, typename Octree::Index v, OutputIterator out) {
+  for (auto t : tree.leaf_tetrahedra(tree.leaf_of_vertex(v))) {
+    const auto& c = tree.tetrahedron(t);
+    if (c[0] == v || c[1] == v || c[2] == v || c[3] == v) *out++ = t;
+  }
+  return out;
+}
+
+/// \ingroup PkgPRStarOctreeRef
+/// The tetrahedra across the four faces of tetrahedron `t` (TT), by random access:
+/// `[k]` is across the face opposite vertex `k`, or `Leaf_topology<Octree>::no_neighbor`.
+template <class Octree>
+std::array<typename Octree::Index, 4> tetrahedron_neighbors(const Octree& tree, typename Octree::Index t) {
+  using Index = typename Octree::Index;
+  std::array<Index, 4> result;
+  const auto& c = tree.tetrahedron(t);
+  for (int k = 0; k < 4; ++k) {
+    result[k] = Leaf_topology<Octree>::no_neighbor;
+    const Index a = c[(k + 1) & 3], b = c[(k + 2) & 3], d = c[(k + 3) & 3];
+    // Both tetrahedra of the face are in the star of its vertex a, hence in a's leaf.
+    for (Index u : tree.leaf_tetrahedra(tree.leaf_of_vertex(a))) {
+      if (u == t) continue;
+      const auto& x = tree.tetrahedron(u);
+      int shared = 0;
+      for (Index w : x) shared += (w == a) + (w == b) + (w == d);
+      if (shared == 3) {
+        result[k] = u;
+        break;
+      }
+    }
+  }
+  return result;
+}
+
+/// \ingroup PkgPRStarOctreeRef
+/// Counts of the simplices of the mesh obtained by local processing only.
+struct Simplex_counts {
+  std::size_t vertices = 0; ///< referenced vertices (in at least one tetrahedron)
+  std::size_t edges = 0;
+  std::size_t triangles = 0;
+  std::size_t boundary_triangles = 0;    ///< triangles with one incident tetrahedron
+  std::size_t nonmanifold_triangles = 0; ///< triangles with three or more incident tetrahedra
+  std::size_t tetrahedra = 0;
+  /// V - E + F - T over the referenced vertices
+  long long euler_characteristic() const {
+    return static_cast<long long>(vertices) - static_cast<long long>(edges) +
+           static_cast<long long>(triangles) - static_cast<long long>(tetrahedra);
+  }
+};
+
+/// \ingroup PkgPRStarOctreeRef
+/// Counts vertices, edges, triangles (and boundary triangles) and tetrahedra by streaming over the
+/// leaves: each simplex is counted by the leaf owning its smallest vertex.
+template <class Octree>
+Simplex_counts count_simplices(const Octree& tree) {
+  Simplex_counts s;
+  s.tetrahedra = tree.number_of_tetrahedra();
+  for_each_leaf(tree, VERTEX_TETRAHEDRA | EDGES | TRIANGLES, [&](const Leaf_topology<Octree>& local) {
+    for (auto v = local.vertex_begin(); v < local.vertex_end(); ++v)
+      if (!local.vertex_tetrahedra(v).empty()) ++s.vertices;
+    for (std::size_t e = 0; e < local.number_of_edges(); ++e) s.edges += local.owns_edge(e);
+    for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
+      if (!local.owns_triangle(f)) continue;
+      ++s.triangles;
+      const std::size_t n = local.triangle_tetrahedra(f).size();
+      s.boundary_triangles += (n == 1);
+      s.nonmanifold_triangles += (n > 2);
+    }
+  });
+  return s;
+}
+
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_LEAF_TOPOLOGY_H
