@@ -232,6 +232,26 @@ public:
     return std::string(context_kind_) + " " + std::to_string(context_number_) + ": ";
   }
 
+  /// A position in the text, to come back to with `restore()` (look-ahead).
+  struct Mark {
+    std::size_t pos, current_line, line;
+  };
+  Mark mark() const { return Mark{pos_, current_line_, line_}; }
+  void restore(const Mark& m) {
+    pos_ = m.pos;
+    current_line_ = m.current_line;
+    line_ = m.line;
+  }
+
+  /// The next token without consuming it (empty at the end).
+  std::string_view peek_token() {
+    const Mark m = mark();
+    std::string_view token;
+    if (!next_token(token)) token = std::string_view();
+    restore(m);
+    return token;
+  }
+
   /// The next raw line (no comment removal, `\r` removed), possibly empty; `false` at the end.
   bool next_raw_line(std::string_view& line) {
     if (pos_ >= text_.size()) return false;
