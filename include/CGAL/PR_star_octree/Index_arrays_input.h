@@ -48,11 +48,13 @@ public:
 
   const Point_3& point(std::size_t i) const { return std::begin(*points_)[i]; }
 
-  std::array<std::size_t, 4> tetrahedron(std::size_t t) const {
+  /// the four vertex indices of tetrahedron `t`, in the element type of the range (a negative
+  /// index stays negative, so that the octree reports it as such)
+  auto tetrahedron(std::size_t t) const {
     const auto& c = std::begin(*tetrahedra_)[t];
+    using I = typename std::decay<decltype(*std::begin(c))>::type;
     auto it = std::begin(c);
-    return {{static_cast<std::size_t>(it[0]), static_cast<std::size_t>(it[1]),
-             static_cast<std::size_t>(it[2]), static_cast<std::size_t>(it[3])}};
+    return std::array<I, 4>{{it[0], it[1], it[2], it[3]}};
   }
 
   bool has_scalar_field() const {

@@ -6,6 +6,8 @@
 #ifndef CGAL_PR_STAR_OCTREE_INTERNAL_CONCEPT_CHECKS_H
 #define CGAL_PR_STAR_OCTREE_INTERNAL_CONCEPT_CHECKS_H
 
+#include <CGAL/number_utils.h>
+
 #include <array>
 #include <cstddef>
 #include <type_traits>

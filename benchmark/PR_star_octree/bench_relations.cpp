@@ -1,0 +1,326 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Tables 1 and 2 of the paper, side by side in one run: for each mesh, the PR-star octree for
+// several k_v, the extended IA data structure and CGAL's Triangulation_3 built from the same arrays:
+// build time, bytes really used, peak RSS, and the time to extract VT (the star of every vertex),
+// plus one plain streaming pass over T (the memory-bandwidth floor).
+//
+// The baselines are measured twice: on the file's order and on the PR-star order (the mesh
+// re-indexed by the octree with k_v = 100), because a locality-friendly order alone speeds them up.
+//
+// Each structure is built and queried in a child process (fork), so that its peak RSS is its own.
+// Times are the minimum of several repetitions after a warm-up.
+//
+// usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--no-cgal] [--csv OUT.csv] MESH...
+
+#include <CGAL/PR_star_octree.h>
+#include <CGAL/PR_star_octree/IO.h>
+#include <CGAL/PR_star_octree/Leaf_topology.h>
+
+#include "baselines/Cgal_triangulation_baseline.h"
+#include "baselines/Extended_IA.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
+using Octree = CGAL::PR_star_octree_3<>;
+using Local = CGAL::PR_star_octree::Leaf_topology<Octree>;
+using Index = std::uint32_t;
+
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+std::size_t status_kib(const char* key) {
+  std::ifstream f("/proc/self/status");
+  std::string line;
+  while (std::getline(f, line))
+    if (line.rfind(key, 0) == 0) return std::stoull(line.substr(std::strlen(key)));
+  return 0;
+}
+
+// What one child process measures.
+struct Result {
+  double build_seconds = 0;
+  double vt_seconds = 0;
+  std::size_t bytes = 0;          // the whole structure, V and T included
+  std::size_t overhead_bytes = 0; // the topological part only
+  std::size_t peak_rss_bytes = 0; // peak RSS growth during build + queries
+  std::size_t checksum = 0;       // sum over all VT of the star sizes (must agree across structures)
+  std::size_t nodes = 0, leaves = 0;
+  double chi = 0, cost_overhead = 0, cost_total = 0;
+  bool ok = false;
+};
+
+// Runs `job` in a child process with a fresh peak-RSS counter; the result comes back through a pipe.
+Result in_child(const std::function<Result()>& job) {
+  int fd[2];
+  if (pipe(fd) != 0) return {};
+  std::cout.flush();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fd[0]);
+    { std::ofstream("/proc/self/clear_refs") << "5"; } // reset the peak RSS (Linux >= 4.0)
+    const std::size_t base = status_kib("VmRSS:");
+    Result r;
+    try {
+      r = job();
+      r.peak_rss_bytes = (status_kib("VmHWM:") - base) * 1024;
+      r.ok = true;
+    } catch (const std::exception& e) {
+      std::cerr << "  failed: " << e.what() << '\n';
+    }
+    if (write(fd[1], &r, sizeof r) != static_cast<ssize_t>(sizeof r)) _exit(1);
+    _exit(0);
+  }
+  close(fd[1]);
+  Result r;
+  if (read(fd[0], &r, sizeof r) != static_cast<ssize_t>(sizeof r)) r.ok = false;
+  close(fd[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return r;
+}
+
+template <class F>
+double best_of(int reps, F&& f) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int r = 0; r <= reps; ++r) { // r = 0: warm-up
+    const double t0 = now();
+    f();
+    const double t = now() - t0;
+    if (r > 0) best = std::min(best, t);
+  }
+  return best;
+}
+
+std::size_t mesh_bytes(const Mesh& m) {
+  return m.points.capacity() * sizeof(Mesh::Point_3) + m.tetrahedra.capacity() * sizeof(Mesh::Tetrahedron);
+}
+
+Result run_prstar(const Mesh& mesh, std::size_t kv, int reps) {
+  Result r;
+  std::unique_ptr<Octree> tree;
+  r.build_seconds = best_of(reps, [&] { tree = std::make_unique<Octree>(CGAL::PR_star_octree::make_input(mesh), kv); });
+  const auto s = tree->statistics();
+  r.nodes = s.nodes;
+  r.leaves = s.leaves;
+  r.chi = s.chi;
+  r.cost_overhead = s.prstar_overhead_per_vertex;
+  r.cost_total = s.prstar_total_per_vertex;
+  r.bytes = s.bytes.total();
+  r.overhead_bytes = s.bytes.index();
+  std::size_t local_bytes = 0;
+  r.vt_seconds = best_of(reps, [&] {
+    std::size_t sum = 0;
+    CGAL::PR_star_octree::for_each_leaf(*tree, CGAL::PR_star_octree::VERTEX_TETRAHEDRA, [&](const Local& local) {
+      for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v) sum += local.vertex_tetrahedra(v).size();
+      local_bytes = std::max(local_bytes, local.memory_bytes());
+    });
+    r.checksum = sum;
+  });
+  return r;
+}
+
+Result run_ia(const Mesh& mesh, int reps) {
+  Result r;
+  std::unique_ptr<prstar_baselines::Extended_IA<Index>> ia;
+  r.build_seconds =
+      best_of(reps, [&] { ia = std::make_unique<prstar_baselines::Extended_IA<Index>>(mesh.points.size(), mesh.tetrahedra); });
+  r.overhead_bytes = ia->overhead_bytes();
+  r.bytes = r.overhead_bytes + mesh_bytes(mesh);
+  const double V = double(mesh.points.size()), T = double(mesh.tetrahedra.size());
+  r.cost_overhead = (4 * T + V) / V;
+  r.cost_total = (8 * T + 4 * V) / V;
+  std::vector<Index> star, stack;
+  r.vt_seconds = best_of(reps, [&] {
+    std::size_t sum = 0;
+    for (Index v = 0; v < mesh.points.size(); ++v) {
+      ia->vertex_tetrahedra(v, star, stack);
+      sum += star.size();
+    }
+    r.checksum = sum;
+  });
+  return r;
+}
+
+Result run_cgal(const Mesh& mesh, int reps) {
+  Result r;
+  const double t0 = now();
+  prstar_baselines::Cgal_triangulation_baseline cgal(mesh.points, mesh.tetrahedra);
+  r.build_seconds = now() - t0; // one build: it is slow and deterministic
+  r.bytes = cgal.memory_bytes();
+  r.overhead_bytes = r.bytes;
+  r.vt_seconds = best_of(reps, [&] {
+    std::size_t sum = 0;
+    cgal.for_each_vertex_star([&](Index, const std::vector<Index>& s) { sum += s.size(); });
+    r.checksum = sum;
+  });
+  return r;
+}
+
+// The mesh re-indexed in the PR-star order (V depth-first by leaves, T by smallest vertex).
+Mesh prstar_order(const Mesh& mesh) {
+  Octree tree(CGAL::PR_star_octree::make_input(mesh), 100);
+  Mesh m;
+  m.points = tree.points();
+  m.tetrahedra = tree.tetrahedra();
+  return m;
+}
+
+std::string base_name(const std::string& p) {
+  const std::size_t s = p.find_last_of('/');
+  return s == std::string::npos ? p : p.substr(s + 1);
+}
+
+std::string kv_name(std::size_t kv) { return kv == Octree::infinite_bucket_size ? "inf" : std::to_string(kv); }
+
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::size_t> kvs = {10, 20, 50, 100, 200, 400, 800, Octree::infinite_bucket_size};
+  int reps = 3;
+  bool with_cgal = true;
+  std::string csv_file;
+  std::vector<std::string> files;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--reps" && i + 1 < argc) reps = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--csv" && i + 1 < argc) csv_file = argv[++i];
+    else if (a == "--no-cgal") with_cgal = false;
+    else if (a == "--kv" && i + 1 < argc) {
+      kvs.clear();
+      std::stringstream s(argv[++i]);
+      std::string item;
+      while (std::getline(s, item, ',')) kvs.push_back(item == "inf" ? Octree::infinite_bucket_size : std::stoull(item));
+    } else if (!a.empty() && a[0] == '-') {
+      std::cerr << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--no-cgal] [--csv OUT.csv] MESH...\n";
+      return 2;
+    } else
+      files.push_back(a);
+  }
+  if (files.empty()) {
+    std::cerr << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--no-cgal] [--csv OUT.csv] MESH...\n";
+    return 2;
+  }
+
+  std::ostringstream csv;
+  csv << "mesh,vertices,tetrahedra,structure,order,kv,nodes,leaves,chi,cost_overhead_per_vertex,"
+         "cost_total_per_vertex,bytes,overhead_bytes,bytes_per_tet,peak_rss_bytes,build_seconds,vt_seconds,"
+         "vt_vs_ia_file,vt_vs_ia_same_order,vt_vs_cgal_same_order,vt_vs_stream,bytes_vs_ia,bytes_vs_cgal\n";
+  std::cout << "| mesh | structure | order | k_v | |N| | |N_leaf| | chi | cost overhead/|V| | cost total/|V| | bytes | "
+               "B/tet | peak RSS | build s | VT s | VT/IA (file) | VT/IA (same order) | VT/CGAL (same order) | "
+               "VT/stream | bytes/IA | bytes/CGAL |\n"
+            << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+
+  for (const std::string& file : files) {
+    Mesh file_mesh;
+    try {
+      CGAL::PR_star_octree::IO::read_tetrahedral_mesh(file, file_mesh);
+    } catch (const std::exception& e) {
+      std::cerr << e.what() << '\n';
+      return 1;
+    }
+    const std::string name = base_name(file);
+    const Mesh ordered = prstar_order(file_mesh);
+    const double T = double(file_mesh.tetrahedra.size());
+    std::cerr << name << ": " << file_mesh.points.size() << " vertices, " << file_mesh.tetrahedra.size()
+              << " tetrahedra\n";
+
+    // The floor: one streaming pass summing the tetrahedron index array.
+    volatile std::size_t sink = 0;
+    const double stream = best_of(std::max(reps, 5), [&] {
+      std::size_t s = 0;
+      for (const auto& c : file_mesh.tetrahedra) s += c[0] + c[1] + c[2] + c[3];
+      sink = s;
+    });
+    (void)sink;
+
+    struct Row {
+      std::string structure, order, kv;
+      Result r;
+    };
+    std::vector<Row> rows;
+    std::cerr << "  extended IA ...\n";
+    rows.push_back({"extended IA", "file", "-", in_child([&] { return run_ia(file_mesh, reps); })});
+    rows.push_back({"extended IA", "PR-star", "-", in_child([&] { return run_ia(ordered, reps); })});
+    if (with_cgal) {
+      std::cerr << "  CGAL Triangulation_3 ...\n";
+      rows.push_back({"CGAL Triangulation_3", "file", "-", in_child([&] { return run_cgal(file_mesh, reps); })});
+      rows.push_back({"CGAL Triangulation_3", "PR-star", "-", in_child([&] { return run_cgal(ordered, reps); })});
+    }
+    for (std::size_t kv : kvs) {
+      std::cerr << "  PR-star k_v = " << kv_name(kv) << " ...\n";
+      rows.push_back({"PR-star", "file", kv_name(kv), in_child([&] { return run_prstar(file_mesh, kv, reps); })});
+    }
+    const Result& ia_file = rows[0].r;
+    const Result& ia_same = rows[1].r;
+    const Result* cgal_same = with_cgal ? &rows[3].r : nullptr;
+    for (const Row& row : rows) {
+      const Result& r = row.r;
+      if (!r.ok) {
+        std::cout << "| " << name << " | " << row.structure << " | " << row.order << " | " << row.kv
+                  << " | failed |\n";
+        continue;
+      }
+      if (r.checksum != ia_file.checksum)
+        std::cerr << "  warning: " << row.structure << " VT checksum " << r.checksum << " != IA " << ia_file.checksum
+                  << '\n';
+      const bool pr = row.structure == "PR-star";
+      const double vs_ia_file = r.vt_seconds / ia_file.vt_seconds;
+      const double vs_ia_same = r.vt_seconds / ia_same.vt_seconds;
+      const double vs_cgal = cgal_same && cgal_same->ok ? r.vt_seconds / cgal_same->vt_seconds : 0;
+      const double vs_stream = r.vt_seconds / stream;
+      const double bytes_ia = double(r.bytes) / double(ia_file.bytes);
+      const double bytes_cgal = cgal_same && cgal_same->ok ? double(r.bytes) / double(cgal_same->bytes) : 0;
+      std::cout << "| " << name << " | " << row.structure << " | " << row.order << " | " << row.kv << " | "
+                << (pr ? std::to_string(r.nodes) : "-") << " | " << (pr ? std::to_string(r.leaves) : "-") << " | "
+                << (pr ? fmt("%.3f", r.chi) : "-") << " | "
+                << (r.cost_overhead > 0 ? fmt("%.2f", r.cost_overhead) : "-") << " | "
+                << (r.cost_total > 0 ? fmt("%.2f", r.cost_total) : "-") << " | " << r.bytes << " | "
+                << fmt("%.1f", double(r.bytes) / T) << " | " << fmt("%.1f MiB", double(r.peak_rss_bytes) / 1048576.)
+                << " | " << fmt("%.4f", r.build_seconds) << " | " << fmt("%.4f", r.vt_seconds) << " | "
+                << fmt("%.2f", vs_ia_file) << " | " << fmt("%.2f", vs_ia_same) << " | "
+                << (vs_cgal > 0 ? fmt("%.3f", vs_cgal) : "-") << " | " << fmt("%.1f", vs_stream) << " | "
+                << fmt("%.2f", bytes_ia) << " | " << (bytes_cgal > 0 ? fmt("%.3f", bytes_cgal) : "-") << " |\n";
+      csv << name << ',' << file_mesh.points.size() << ',' << file_mesh.tetrahedra.size() << ',' << row.structure
+          << ',' << row.order << ',' << row.kv << ',' << (pr ? r.nodes : 0) << ',' << (pr ? r.leaves : 0) << ','
+          << r.chi << ',' << r.cost_overhead << ',' << r.cost_total << ',' << r.bytes << ',' << r.overhead_bytes
+          << ',' << double(r.bytes) / T << ',' << r.peak_rss_bytes << ',' << r.build_seconds << ',' << r.vt_seconds
+          << ',' << vs_ia_file << ',' << vs_ia_same << ',' << vs_cgal << ',' << vs_stream << ',' << bytes_ia << ','
+          << bytes_cgal << '\n';
+    }
+    std::cout << "| " << name << " | streaming pass over T | file | - | | | | | | | | | | "
+              << fmt("%.4f", stream) << " | | | | 1.0 | | |\n";
+    std::cout.flush();
+  }
+  if (!csv_file.empty()) {
+    std::ofstream f(csv_file);
+    f << csv.str();
+    if (!f) {
+      std::cerr << csv_file << ": cannot write\n";
+      return 1;
+    }
+  }
+  return 0;
+}

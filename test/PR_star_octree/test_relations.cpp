@@ -1,0 +1,369 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The local topological relations of the PR-star octree (Leaf_topology, for_each_leaf, random
+// access, global counts) against a brute-force global computation on the user's arrays (original
+// numbering, maps and sorting only), against the extended IA baseline, and against CGAL's
+// Triangulation_3 adjacency, on generated (Mesh_3, TetGen) and real meshes, for several k_v.
+//
+// usage: test_relations GENERATED_DATA_DIR [SHARED_DATA_DIR]
+
+#include <CGAL/PR_star_octree.h>
+#include <CGAL/PR_star_octree/IO.h>
+#include <CGAL/PR_star_octree/Leaf_topology.h>
+
+#include "baselines/Cgal_triangulation_baseline.h"
+#include "baselines/Extended_IA.h"
+
+#include <algorithm>
+#include <iostream>
+#include <map>
+#include <set>
+#include <string>
+#include <sys/stat.h>
+#include <vector>
+
+namespace {
+
+int failures = 0;
+#define CHECK(cond)                                                                                          \
+  do {                                                                                                       \
+    if (!(cond)) {                                                                                           \
+      ++failures;                                                                                            \
+      if (failures < 50) std::cerr << __FILE__ << ":" << __LINE__ << ": CHECK failed: " #cond << std::endl; \
+    }                                                                                                        \
+  } while (0)
+
+using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
+using Octree = CGAL::PR_star_octree_3<>;
+using Local = CGAL::PR_star_octree::Leaf_topology<Octree>;
+using Index = std::uint32_t;
+using Face = std::array<Index, 3>;
+using EdgeKey = std::pair<Index, Index>;
+
+bool exists(const std::string& f) {
+  struct stat st;
+  return ::stat(f.c_str(), &st) == 0;
+}
+
+// The brute-force truth, on the user's numbering.
+struct Truth {
+  std::vector<std::vector<Index>> vt; // sorted
+  std::vector<std::set<Index>> vv;
+  std::map<Face, std::vector<Index>> faces;
+  std::map<EdgeKey, std::vector<Index>> edges; // sorted star
+  std::size_t referenced = 0;
+
+  explicit Truth(const Mesh& m) : vt(m.points.size()), vv(m.points.size()) {
+    for (Index t = 0; t < m.tetrahedra.size(); ++t) {
+      const auto& c = m.tetrahedra[t];
+      for (int i = 0; i < 4; ++i) {
+        vt[c[i]].push_back(t);
+        for (int j = 0; j < 4; ++j)
+          if (i != j) vv[c[i]].insert(c[j]);
+        for (int j = i + 1; j < 4; ++j) edges[{std::min(c[i], c[j]), std::max(c[i], c[j])}].push_back(t);
+        Face f{{c[(i + 1) & 3], c[(i + 2) & 3], c[(i + 3) & 3]}};
+        std::sort(f.begin(), f.end());
+        faces[f].push_back(t);
+      }
+    }
+    for (const auto& s : vt) referenced += !s.empty();
+  }
+  std::size_t boundary_faces() const {
+    std::size_t n = 0;
+    for (const auto& f : faces) n += f.second.size() == 1;
+    return n;
+  }
+  bool is_boundary_edge(Index a, Index b) const {
+    // An edge is on the boundary when a boundary face contains it.
+    const auto& star = edges.at({std::min(a, b), std::max(a, b)});
+    return std::any_of(star.begin(), star.end(), [&](Index t) { return has_boundary_face_with(t, a, b); });
+  }
+  const std::vector<Index>* tets_of_face(Face f) const {
+    std::sort(f.begin(), f.end());
+    auto it = faces.find(f);
+    return it == faces.end() ? nullptr : &it->second;
+  }
+  const Mesh* mesh = nullptr;
+  bool has_boundary_face_with(Index t, Index a, Index b) const {
+    const auto& c = mesh->tetrahedra[t];
+    for (int k = 0; k < 4; ++k) {
+      Face f{{c[(k + 1) & 3], c[(k + 2) & 3], c[(k + 3) & 3]}};
+      if (std::find(f.begin(), f.end(), a) == f.end() || std::find(f.begin(), f.end(), b) == f.end()) continue;
+      if (tets_of_face(f)->size() == 1) return true;
+    }
+    return false;
+  }
+};
+
+std::size_t shared_vertices(const Mesh::Tetrahedron& x, const Mesh::Tetrahedron& y) {
+  std::size_t n = 0;
+  for (Index a : x)
+    for (Index b : y) n += a == b;
+  return n;
+}
+
+// Checks that `star` (original tet indices) is a cyclic (closed) or linear (open) sequence of
+// tetrahedra around edge (a, b), consecutive ones sharing a face that contains the edge.
+bool is_ordered_star(const Mesh& m, const std::vector<Index>& star, bool closed) {
+  for (std::size_t i = 0; i + 1 < star.size(); ++i)
+    if (shared_vertices(m.tetrahedra[star[i]], m.tetrahedra[star[i + 1]]) != 3) return false;
+  if (closed && star.size() > 2 && shared_vertices(m.tetrahedra[star.front()], m.tetrahedra[star.back()]) != 3)
+    return false;
+  return true;
+}
+
+// Same cyclic sequence up to rotation and reversal.
+bool same_cycle(std::vector<Index> a, const std::vector<Index>& b) {
+  if (a.size() != b.size()) return false;
+  if (a.empty()) return true;
+  for (int dir = 0; dir < 2; ++dir) {
+    for (std::size_t r = 0; r < a.size(); ++r) {
+      bool eq = true;
+      for (std::size_t i = 0; i < a.size() && eq; ++i) eq = a[(r + i) % a.size()] == b[i];
+      if (eq) return true;
+    }
+    std::reverse(a.begin(), a.end());
+  }
+  return false;
+}
+
+void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std::size_t>& kvs, bool with_cgal) {
+  Truth truth(mesh);
+  truth.mesh = &mesh;
+  const int before = failures;
+
+  // Extended IA against the brute force.
+  prstar_baselines::Extended_IA<Index> ia(mesh.points.size(), mesh.tetrahedra);
+  std::vector<Index> star, stack;
+  for (Index v = 0; v < mesh.points.size(); ++v) {
+    ia.vertex_tetrahedra(v, star, stack);
+    std::sort(star.begin(), star.end());
+    CHECK(star == truth.vt[v]);
+  }
+
+  // CGAL's triangulation adjacency against the brute force.
+  if (with_cgal) {
+    prstar_baselines::Cgal_triangulation_baseline cgal(mesh.points, mesh.tetrahedra);
+    CHECK(cgal.number_of_finite_cells() == mesh.tetrahedra.size());
+    for (Index v = 0; v < mesh.points.size(); ++v) {
+      std::vector<Index> s;
+      cgal.vertex_tetrahedra(v, std::back_inserter(s));
+      std::sort(s.begin(), s.end());
+      CHECK(s == truth.vt[v]);
+    }
+    for (Index t = 0; t < mesh.tetrahedra.size(); ++t) {
+      const auto n = cgal.tetrahedron_neighbors(t);
+      const auto& c = mesh.tetrahedra[t];
+      for (int k = 0; k < 4; ++k) {
+        const auto* f = truth.tets_of_face({{c[(k + 1) & 3], c[(k + 2) & 3], c[(k + 3) & 3]}});
+        const Index expected = f->size() == 1 ? Index(-1) : ((*f)[0] == t ? (*f)[1] : (*f)[0]);
+        CHECK(n[k] == expected);
+      }
+    }
+    std::size_t checked = 0;
+    for (const auto& e : truth.edges) {
+      if (++checked % 7) continue; // a sample of the edges: the circulator is slow
+      const auto s = cgal.edge_star(e.first.first, e.first.second);
+      std::vector<Index> sorted = s;
+      std::sort(sorted.begin(), sorted.end());
+      CHECK(sorted == e.second);
+      CHECK(is_ordered_star(mesh, s, !truth.is_boundary_edge(e.first.first, e.first.second)));
+    }
+  }
+
+  for (std::size_t kv : kvs) {
+    Octree tree(CGAL::PR_star_octree::make_input(mesh), kv);
+    auto orig_v = [&](Index v) { return tree.original_vertex(v); };
+    auto orig_t = [&](Index t) { return tree.original_tetrahedron(t); };
+    std::size_t edges_owned = 0, triangles_owned = 0, boundary_owned = 0;
+    std::set<EdgeKey> edges_seen;
+    std::set<Face> triangles_seen;
+
+    CGAL::PR_star_octree::for_each_leaf(tree, CGAL::PR_star_octree::ALL_RELATIONS, [&](const Local& local) {
+      const auto tets = local.tetrahedra();
+      for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v) {
+        // VT (Algorithm 1) and the random-access star.
+        std::vector<Index> s;
+        for (Index t : local.vertex_tetrahedra(v)) s.push_back(orig_t(t));
+        std::sort(s.begin(), s.end());
+        CHECK(s == truth.vt[orig_v(v)]);
+        std::vector<Index> r;
+        CGAL::PR_star_octree::vertex_star(tree, v, std::back_inserter(r));
+        CHECK(r.size() == s.size());
+        for (std::size_t i = 0; i < local.vertex_local_tetrahedra(v).size(); ++i)
+          CHECK(tets[local.vertex_local_tetrahedra(v)[i]] == local.vertex_tetrahedra(v)[i]);
+        // VV.
+        std::set<Index> w;
+        for (Index u : local.vertex_vertices(v)) w.insert(orig_v(u));
+        CHECK(w == truth.vv[orig_v(v)]);
+        // Vertex link: the faces opposite v, positively oriented with v first.
+        std::vector<std::array<Index, 3>> link;
+        local.vertex_link(v, std::back_inserter(link));
+        CHECK(link.size() == s.size());
+        for (const auto& f : link) {
+          CHECK(CGAL::orientation(tree.point(v), tree.point(f[0]), tree.point(f[1]), tree.point(f[2])) !=
+                CGAL::NEGATIVE);
+          CHECK(truth.tets_of_face({{orig_v(f[0]), orig_v(f[1]), orig_v(f[2])}}) != nullptr);
+        }
+        // VE: the edges of v.
+        std::size_t degree = 0;
+        for (Index e : local.vertex_edges(v)) {
+          CHECK(local.edge(e).v0 == v || local.edge(e).v1 == v);
+          ++degree;
+        }
+        CHECK(degree == truth.vv[orig_v(v)].size());
+      }
+      // TT (Algorithm 2): exact for faces with a vertex in the leaf; random access for all.
+      for (std::size_t i = 0; i < tets.size(); ++i) {
+        const Index t = tets[i];
+        const auto& c = tree.tetrahedron(t);
+        const auto ra = CGAL::PR_star_octree::tetrahedron_neighbors(tree, t);
+        for (int k = 0; k < 4; ++k) {
+          const Face f{{orig_v(c[(k + 1) & 3]), orig_v(c[(k + 2) & 3]), orig_v(c[(k + 3) & 3])}};
+          const auto* ft = truth.tets_of_face(f);
+          CHECK(ft != nullptr);
+          if (!ft) continue;
+          const Index expected = ft->size() == 1 ? Local::no_neighbor : ((*ft)[0] == orig_t(t) ? (*ft)[1] : (*ft)[0]);
+          const Index got = local.tetrahedron_adjacency(i)[k];
+          const bool face_in_leaf = local.is_local_vertex(c[(k + 1) & 3]) || local.is_local_vertex(c[(k + 2) & 3]) ||
+                                    local.is_local_vertex(c[(k + 3) & 3]);
+          if (face_in_leaf) CHECK((got == Local::no_neighbor ? got : orig_t(got)) == expected);
+          else CHECK(got == Local::unknown_neighbor);
+          CHECK((ra[k] == Local::no_neighbor ? ra[k] : orig_t(ra[k])) == expected);
+        }
+      }
+      // Edges: stars as sets and as cyclic sequences, links, boundary flags, each owned once.
+      for (std::size_t e = 0; e < local.number_of_edges(); ++e) {
+        const auto& ed = local.edge(e);
+        CHECK(ed.v0 < ed.v1);
+        CHECK(local.is_local_vertex(ed.v0) || local.is_local_vertex(ed.v1));
+        const EdgeKey key{std::min(orig_v(ed.v0), orig_v(ed.v1)), std::max(orig_v(ed.v0), orig_v(ed.v1))};
+        auto it = truth.edges.find(key);
+        CHECK(it != truth.edges.end());
+        if (it == truth.edges.end()) continue;
+        std::vector<Index> s;
+        for (Index t : local.edge_tetrahedra(e)) s.push_back(orig_t(t));
+        std::vector<Index> sorted = s;
+        std::sort(sorted.begin(), sorted.end());
+        CHECK(sorted == it->second);
+        const bool boundary = truth.is_boundary_edge(key.first, key.second);
+        CHECK(local.is_boundary_edge(e) == boundary);
+        CHECK(!local.is_nonmanifold_edge(e));
+        CHECK(is_ordered_star(mesh, s, !boundary));
+        // The link: one vertex per tetrahedron (closed) or one more (open); tetrahedron i holds
+        // link vertices i and i+1 (cyclically).
+        const auto lk = local.edge_link(e);
+        CHECK(lk.size() == s.size() + (boundary ? 1 : 0));
+        for (std::size_t i = 0; i < s.size() && lk.size() == s.size() + (boundary ? 1 : 0); ++i) {
+          const auto& c = tree.tetrahedron(local.edge_tetrahedra(e)[i]);
+          const Index x = lk[i], y = lk[(i + 1) % lk.size()];
+          CHECK(std::count(c.begin(), c.end(), x) == 1 && std::count(c.begin(), c.end(), y) == 1);
+          // Right-hand rule around v0 -> v1: (v0, v1, x, y) positively oriented.
+          CHECK(CGAL::orientation(tree.point(ed.v0), tree.point(ed.v1), tree.point(x), tree.point(y)) !=
+                CGAL::NEGATIVE);
+        }
+        if (local.owns_edge(e)) {
+          ++edges_owned;
+          CHECK(edges_seen.insert(key).second);
+        }
+      }
+      // Triangles.
+      for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
+        const auto& tr = local.triangle(f);
+        Face key{{orig_v(tr[0]), orig_v(tr[1]), orig_v(tr[2])}};
+        std::sort(key.begin(), key.end());
+        const auto* ft = truth.tets_of_face(key);
+        CHECK(ft != nullptr);
+        if (!ft) continue;
+        std::vector<Index> s;
+        for (Index t : local.triangle_tetrahedra(f)) s.push_back(orig_t(t));
+        std::sort(s.begin(), s.end());
+        std::vector<Index> expected = *ft;
+        std::sort(expected.begin(), expected.end());
+        CHECK(s == expected);
+        if (local.owns_triangle(f)) {
+          ++triangles_owned;
+          boundary_owned += s.size() == 1;
+          CHECK(triangles_seen.insert(key).second);
+        }
+      }
+    });
+    CHECK(edges_owned == truth.edges.size());
+    CHECK(triangles_owned == truth.faces.size());
+    CHECK(boundary_owned == truth.boundary_faces());
+    const auto counts = CGAL::PR_star_octree::count_simplices(tree);
+    CHECK(counts.edges == truth.edges.size());
+    CHECK(counts.triangles == truth.faces.size());
+    CHECK(counts.boundary_triangles == truth.boundary_faces());
+    CHECK(counts.vertices == truth.referenced);
+    CHECK(counts.euler_characteristic() == (long long)truth.referenced - (long long)truth.edges.size() +
+                                               (long long)truth.faces.size() - (long long)mesh.tetrahedra.size());
+    if (kv == kvs.front())
+      std::cout << "  " << name << ": V=" << counts.vertices << " E=" << counts.edges << " F=" << counts.triangles
+                << " (boundary " << counts.boundary_triangles << ") T=" << counts.tetrahedra
+                << " Euler=" << counts.euler_characteristic() << "\n";
+  }
+  if (failures != before) std::cerr << "  ... on " << name << std::endl;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  const std::string generated = argc > 1 ? argv[1] : "";
+  const std::string shared = argc > 2 ? argv[2] : "";
+  const std::vector<std::size_t> kvs = {1, 4, 20, 100, Octree::infinite_bucket_size};
+
+  // Hand-checked: the cube in six tetrahedra, 19 edges, 18 triangles (12 on the boundary), Euler 1.
+  {
+    Mesh cube;
+    cube.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
+    cube.tetrahedra = {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
+    for (std::size_t kv : kvs) {
+      Octree tree(CGAL::PR_star_octree::make_input(cube), kv);
+      const auto c = CGAL::PR_star_octree::count_simplices(tree);
+      CHECK(c.vertices == 8 && c.edges == 19 && c.triangles == 18 && c.boundary_triangles == 12 && c.tetrahedra == 6);
+      CHECK(c.euler_characteristic() == 1);
+      // The diagonal (0,7) is the only interior edge: its star is the closed cycle of all 6.
+      CGAL::PR_star_octree::for_each_leaf(tree, CGAL::PR_star_octree::EDGES, [&](const Local& local) {
+        for (std::size_t e = 0; e < local.number_of_edges(); ++e) {
+          const Index a = tree.original_vertex(local.edge(e).v0), b = tree.original_vertex(local.edge(e).v1);
+          const bool diagonal = std::min(a, b) == 0 && std::max(a, b) == 7;
+          CHECK(local.is_boundary_edge(e) == !diagonal);
+          if (diagonal) CHECK(local.edge_tetrahedra(e).size() == 6 && local.edge_link(e).size() == 6);
+        }
+      });
+    }
+    check_mesh(cube, "cube (6 tetrahedra)", kvs, true);
+  }
+
+  for (const char* name : {"sphere.mesh", "torus.mesh", "cube.mesh", "sphere_tetgen.mesh", "cube_tetgen.vtu"}) {
+    const std::string file = generated + "/" + name;
+    if (!exists(file)) {
+      std::cerr << "missing generated input " << file << "\n";
+      CHECK(false);
+      continue;
+    }
+    Mesh mesh;
+    CGAL::PR_star_octree::IO::read_tetrahedral_mesh(file, mesh);
+    check_mesh(mesh, name, kvs, true);
+  }
+  if (!shared.empty() && exists(shared)) {
+    for (const char* name : {"spx_zsweep.off", "armadillo_sofa.vtu", "bunny_sofa.vtu", "skull_14k.off",
+                             "t13_data.1.node", "part1.1.node"}) {
+      const std::string file = shared + "/" + name;
+      if (!exists(file)) continue;
+      Mesh mesh;
+      CGAL::PR_star_octree::IO::read_tetrahedral_mesh(file, mesh);
+      check_mesh(mesh, name, kvs, true);
+    }
+  } else
+    std::cout << "shared data not found: real-mesh checks skipped\n";
+
+  if (failures) {
+    std::cerr << failures << " check(s) failed\n";
+    return 1;
+  }
+  std::cout << "test_relations: all checks passed\n";
+  return 0;
+}
