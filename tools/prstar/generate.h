@@ -47,8 +47,9 @@ using Generate_domain = CGAL::Labeled_mesh_domain_3<Generate_kernel>;
 using Generate_triangulation = CGAL::Mesh_triangulation_3<Generate_domain, CGAL::Default, CGAL::Sequential_tag>::type;
 using Generate_c3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Generate_triangulation>;
 
-/// Runs Mesh_3 (refinement, then perturbation and exudation without time limits, so that the
-/// result is the same on every run).  `options.tetgen` must be false.
+/// Runs Mesh_3: refinement, then perturbation and exudation up to minimum dihedral angles of 10 and
+/// 15 degrees, without time limits so that the result is the same on every run.  Sequential.
+/// `options.tetgen` must be false.
 /// \throws std::runtime_error on invalid options or an unreadable / unsuitable surface file
 Generate_c3t3 generate_c3t3(const Generate_options& options);
 
