@@ -77,17 +77,26 @@ public:
   using Node_index = Index;
   using Statistics = PR_star_octree::Statistics;
 
-  /// A node of the octree: its vertex range and, for a leaf, its range in the leaf-tetrahedra array.
+  /// A node of the octree: its vertex range and, for a leaf, its tetrahedra.
+  ///
+  /// The tetrahedra of a leaf come in two parts.  Those whose smallest vertex is in the leaf (the
+  /// leaf *owns* them) form the contiguous range `[owned_begin, owned_end)` of `T`, because `T` is
+  /// sorted by smallest vertex; they are not listed.  The others (smallest vertex in an earlier
+  /// leaf) are listed in `shared_tetrahedra_array()[shared_begin, shared_end)`.  So the lists hold
+  /// `(chi - 1) |T|` indices instead of `chi |T|`.
   struct Node {
-    Index vertex_begin;
-    Index vertex_end;
-    Index tetrahedra_begin; ///< into `leaf_tetrahedra_array()`; empty for internal nodes
-    Index tetrahedra_end;
+    Index vertex_begin; ///< first vertex of the node (depth-first numbering)
+    Index vertex_end;   ///< one past the last vertex of the node
+    Index owned_begin;  ///< first tetrahedron owned by the leaf (empty range for internal nodes)
+    Index owned_end;    ///< one past the last tetrahedron owned by the leaf
+    Index shared_begin; ///< into `shared_tetrahedra_array()`: the leaf's other tetrahedra
+    Index shared_end;
     Node_index first_child; ///< the eight children are contiguous; `no_node` for a leaf
     Node_index parent;      ///< `no_node` for the root
     bool is_leaf() const { return first_child == no_node; }
     std::size_t number_of_vertices() const { return vertex_end - vertex_begin; }
-    std::size_t number_of_tetrahedra() const { return tetrahedra_end - tetrahedra_begin; }
+    /// the number of tetrahedra incident in the leaf's vertices (0 for internal nodes)
+    std::size_t number_of_tetrahedra() const { return (owned_end - owned_begin) + (shared_end - shared_begin); }
   };
 
   /// A contiguous read-only range.
@@ -100,6 +109,64 @@ public:
     std::size_t size() const { return static_cast<std::size_t>(last - first); }
     bool empty() const { return first == last; }
     const T& operator[](std::size_t i) const { return first[i]; }
+  };
+
+  /// The tetrahedra of a leaf in increasing index order: the listed shared ones, then the owned
+  /// range.  A random-access range of `Index` values.
+  class Leaf_tetrahedra {
+  public:
+    class iterator {
+    public:
+      using iterator_category = std::random_access_iterator_tag;
+      using value_type = Index;
+      using difference_type = std::ptrdiff_t;
+      using pointer = const Index*;
+      using reference = Index;
+      iterator() = default;
+      iterator(const Leaf_tetrahedra* r, std::size_t i) : r_(r), i_(i) {}
+      Index operator*() const { return (*r_)[i_]; }
+      Index operator[](difference_type d) const { return (*r_)[i_ + d]; }
+      iterator& operator++() { ++i_; return *this; }
+      iterator operator++(int) { iterator c = *this; ++i_; return c; }
+      iterator& operator--() { --i_; return *this; }
+      iterator& operator+=(difference_type d) { i_ += d; return *this; }
+      iterator& operator-=(difference_type d) { i_ -= d; return *this; }
+      friend iterator operator+(iterator a, difference_type d) { return a += d; }
+      friend iterator operator-(iterator a, difference_type d) { return a -= d; }
+      friend difference_type operator-(const iterator& a, const iterator& b) {
+        return static_cast<difference_type>(a.i_) - static_cast<difference_type>(b.i_);
+      }
+      friend bool operator==(const iterator& a, const iterator& b) { return a.i_ == b.i_; }
+      friend bool operator!=(const iterator& a, const iterator& b) { return a.i_ != b.i_; }
+      friend bool operator<(const iterator& a, const iterator& b) { return a.i_ < b.i_; }
+
+    private:
+      const Leaf_tetrahedra* r_ = nullptr;
+      std::size_t i_ = 0;
+    };
+
+    Leaf_tetrahedra(const Index* shared, std::size_t n_shared, Index owned_begin, Index owned_end)
+        : shared_(shared), n_shared_(n_shared), owned_begin_(owned_begin),
+          size_(n_shared + (owned_end - owned_begin)) {}
+    std::size_t size() const { return size_; }
+    bool empty() const { return size_ == 0; }
+    Index operator[](std::size_t i) const {
+      return i < n_shared_ ? shared_[i] : static_cast<Index>(owned_begin_ + (i - n_shared_));
+    }
+    iterator begin() const { return iterator(this, 0); }
+    iterator end() const { return iterator(this, size_); }
+    /// the listed (shared) part
+    Range<Index> shared() const { return {shared_, shared_ + n_shared_}; }
+    /// the owned part: the tetrahedra `[first, second)` of `T`
+    std::pair<Index, Index> owned() const {
+      return {owned_begin_, static_cast<Index>(owned_begin_ + (size_ - n_shared_))};
+    }
+
+  private:
+    const Index* shared_;
+    std::size_t n_shared_;
+    Index owned_begin_;
+    std::size_t size_;
   };
   /// @}
 
@@ -159,13 +226,14 @@ public:
   /// the leaves in depth-first order (their vertex ranges are consecutive)
   const std::vector<Node_index>& leaves() const { return leaves_; }
   std::size_t number_of_leaves() const { return leaves_.size(); }
-  /// the tetrahedra incident in the vertices of leaf `n`, in increasing index order
-  Range<Index> leaf_tetrahedra(Node_index n) const {
+  /// the tetrahedra incident in the vertices of leaf `n` (its star), in increasing index order
+  Leaf_tetrahedra leaf_tetrahedra(Node_index n) const {
     const Node& nd = nodes_[n];
-    return {leaf_tetrahedra_.data() + nd.tetrahedra_begin, leaf_tetrahedra_.data() + nd.tetrahedra_end};
+    return Leaf_tetrahedra(leaf_tetrahedra_.data() + nd.shared_begin, nd.shared_end - nd.shared_begin, nd.owned_begin,
+                           nd.owned_end);
   }
-  /// the concatenation of all leaf lists (size chi |T|)
-  const std::vector<Index>& leaf_tetrahedra_array() const { return leaf_tetrahedra_; }
+  /// the concatenation of the listed (shared) parts of all leaves: `(chi - 1) |T|` indices
+  const std::vector<Index>& shared_tetrahedra_array() const { return leaf_tetrahedra_; }
   /// the vertex range of node `n`
   std::pair<Index, Index> vertex_range(Node_index n) const {
     return {nodes_[n].vertex_begin, nodes_[n].vertex_end};
@@ -374,7 +442,7 @@ void PR_star_octree_3<GT, I>::split_vertices(const std::vector<std::array<double
   const std::size_t nv = order.size();
   nodes_.clear();
   leaves_.clear();
-  nodes_.push_back(Node{0, static_cast<Index>(nv), 0, 0, no_node, no_node});
+  nodes_.push_back(Node{0, static_cast<Index>(nv), 0, 0, 0, 0, no_node, no_node});
   std::vector<Item> stack{Item{0, root_lo_, root_hi_, 0}};
   std::vector<Index> buffer;
   std::vector<unsigned char> code;
@@ -428,7 +496,7 @@ void PR_star_octree_3<GT, I>::split_vertices(const std::vector<std::array<double
       throw std::invalid_argument("PR_star_octree_3: too many octree nodes for the index type");
     nodes_[item.node].first_child = first;
     for (unsigned c = 0; c < 8; ++c)
-      nodes_.push_back(Node{static_cast<Index>(b + start[c]), static_cast<Index>(b + start[c + 1]), 0, 0,
+      nodes_.push_back(Node{static_cast<Index>(b + start[c]), static_cast<Index>(b + start[c + 1]), 0, 0, 0, 0,
                             no_node, item.node});
     // Push the children in reverse so that child 0 is visited first: leaves come out depth first.
     for (unsigned c = 8; c-- > 0;) {
@@ -514,23 +582,34 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
       if (i == 0 || l[i] != l[i - 1]) out[k++] = l[i];
     return k;
   };
-  std::vector<std::size_t> count(nl + 1, 0);
+  // The owner of a tetrahedron is the leaf of its smallest vertex, i.e. its first distinct leaf:
+  // as T is sorted by smallest vertex, each leaf owns a contiguous range of T.  The other leaves
+  // list it explicitly.
+  std::vector<std::size_t> owned(nl + 1, 0), shared(nl + 1, 0);
   std::array<Index, 4> ls;
   for (const Tetrahedron& c : tetrahedra_) {
     const int k = distinct_leaves(c, ls);
-    for (int i = 0; i < k; ++i) ++count[ls[i] + 1];
+    ++owned[ls[0] + 1];
+    for (int i = 1; i < k; ++i) ++shared[ls[i] + 1];
   }
-  for (std::size_t l = 0; l < nl; ++l) count[l + 1] += count[l];
-  if (count[nl] >= static_cast<std::size_t>(no_node))
-    throw std::invalid_argument("PR_star_octree_3: the leaf lists do not fit the index type");
-  leaf_tetrahedra_.assign(count[nl], 0);
   for (std::size_t l = 0; l < nl; ++l) {
-    nodes_[leaves_[l]].tetrahedra_begin = static_cast<Index>(count[l]);
-    nodes_[leaves_[l]].tetrahedra_end = static_cast<Index>(count[l + 1]);
+    owned[l + 1] += owned[l];
+    shared[l + 1] += shared[l];
+  }
+  if (shared[nl] >= static_cast<std::size_t>(no_node))
+    throw std::invalid_argument("PR_star_octree_3: the leaf lists do not fit the index type");
+  leaf_tetrahedra_.assign(shared[nl], 0);
+  for (std::size_t l = 0; l < nl; ++l) {
+    Node& nd = nodes_[leaves_[l]];
+    nd.owned_begin = static_cast<Index>(owned[l]);
+    nd.owned_end = static_cast<Index>(owned[l + 1]);
+    nd.shared_begin = static_cast<Index>(shared[l]);
+    nd.shared_end = static_cast<Index>(shared[l + 1]);
   }
   for (std::size_t t = 0; t < tetrahedra_.size(); ++t) {
     const int k = distinct_leaves(tetrahedra_[t], ls);
-    for (int i = 0; i < k; ++i) leaf_tetrahedra_[count[ls[i]]++] = static_cast<Index>(t);
+    CGAL_assertion(t >= nodes_[leaves_[ls[0]]].owned_begin && t < nodes_[leaves_[ls[0]]].owned_end);
+    for (int i = 1; i < k; ++i) leaf_tetrahedra_[shared[ls[i]]++] = static_cast<Index>(t);
   }
 }
 
@@ -553,7 +632,7 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
   s.coincident_leaves = coincident_leaves_;
   s.reoriented_tetrahedra = reoriented_count_;
   s.degenerate_tetrahedra = degenerate_tetrahedra_;
-  s.leaf_tetrahedra_entries = leaf_tetrahedra_.size();
+  s.leaf_tetrahedra_entries = leaf_tetrahedra_.size() + tetrahedra_.size();
   for (Node_index n : leaves_) {
     const Node& nd = nodes_[n];
     if (nd.vertex_begin == nd.vertex_end) ++s.empty_leaves;

@@ -121,7 +121,7 @@ std::map<std::vector<double>, std::set<std::size_t>> check_invariants(const Tree
         CHECK(all_same || tree.depth(static_cast<Index>(n)) == tree.max_depth());
       }
     } else {
-      CHECK(nd.tetrahedra_begin == nd.tetrahedra_end);
+      CHECK(nd.number_of_tetrahedra() == 0);
       CHECK(tree.node(nd.first_child).vertex_begin == nd.vertex_begin);
       CHECK(tree.node(nd.first_child + 7).vertex_end == nd.vertex_end);
       for (int c = 0; c < 7; ++c)

@@ -83,7 +83,7 @@ public:
   Index vertex_end() const { return ve_; }
   bool is_local_vertex(Index v) const { return vb_ <= v && v < ve_; }
   /// the tetrahedra of the leaf (its list); "local tetrahedron `i`" is `tetrahedra()[i]`
-  Range<Index> tetrahedra() const { return tree_->leaf_tetrahedra(leaf_); }
+  typename Octree::Leaf_tetrahedra tetrahedra() const { return tree_->leaf_tetrahedra(leaf_); }
   /// @}
 
   /// \name Vertex-tetrahedra (VT)
@@ -236,7 +236,7 @@ void Leaf_topology<Octree>::build(const Octree& tree, Node_index leaf, unsigned 
 template <class Octree>
 void Leaf_topology<Octree>::build_vt() {
   const std::size_t nv = ve_ - vb_;
-  const Range<Index> tets = tetrahedra();
+  const auto tets = tetrahedra();
   vt_offsets_.assign(nv + 1, 0);
   for (Index t : tets)
     for (Index v : tree_->tetrahedron(t))
@@ -259,7 +259,7 @@ void Leaf_topology<Octree>::build_vt() {
 // Algorithm 2 and the triangles: the faces with a vertex in the leaf, sorted and paired.
 template <class Octree>
 void Leaf_topology<Octree>::build_faces(bool adjacency, bool triangles) {
-  const Range<Index> tets = tetrahedra();
+  const auto tets = tetrahedra();
   face_records_.clear();
   if (adjacency)
     tt_.assign(tets.size(), std::array<Index, 4>{

@@ -170,10 +170,10 @@ private:
         if (out.size() == count)
           throw Read_error(name_, doc_.line_of(b),
                            describe(e) + ": more values than the " + std::to_string(count) + " expected");
-        T v;
+        T v{};
         const char* why;
         if constexpr (std::is_integral<T>::value) {
-          long long x;
+          long long x = 0;
           why = parse_integer(tok, x);
           v = x;
         } else {
