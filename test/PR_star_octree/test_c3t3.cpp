@@ -8,6 +8,7 @@
 
 #include "generate.h"
 
+#include <CGAL/PR_star_octree/Index_arrays_input.h>
 #include <CGAL/PR_star_octree/Mesh_complex_3_input.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -146,6 +147,11 @@ void check_adapter(const C3t3& c3t3, const std::string& name, bool convex) {
     same = same && mesh.tetrahedron_labels[t] == 1;
   }
   CHECK(same);
+
+  // with Index_arrays_input.h also included, make_input() still picks the right adapter
+  const auto from_arrays = CGAL::PR_star_octree::make_input(mesh.points, mesh.tetrahedra);
+  const auto from_mesh = CGAL::PR_star_octree::make_input(mesh);
+  CHECK(from_arrays.number_of_tetrahedra() == nt && from_mesh.number_of_vertices() == nv);
 }
 
 // Validity of an indexed mesh: indices in range, every vertex used, every tetrahedron positively

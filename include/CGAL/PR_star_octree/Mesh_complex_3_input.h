@@ -8,6 +8,8 @@
 
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+
 #include <boost/property_map/property_map.hpp>
 
 #include <array>
@@ -154,17 +156,23 @@ private:
 
 /// \ingroup PkgPRStarOctreeRef
 /// Adapts a mesh complex (see `Mesh_complex_3_input`) without a scalar field.
-template <class C3T3>
-Mesh_complex_3_input<C3T3> make_input(const C3T3& c3t3) {
-  return Mesh_complex_3_input<C3T3>(c3t3);
+///
+/// (Other models of `MeshComplex_3InTriangulation_3` are adapted by constructing a
+/// `Mesh_complex_3_input` directly: `make_input()` takes `Mesh_complex_3_in_triangulation_3`
+/// explicitly so as to be more specialized than `make_input(points, tetrahedra)`.)
+template <class Tr, class CornerIndex, class CurveIndex>
+Mesh_complex_3_input<Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>>
+make_input(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>& c3t3) {
+  return Mesh_complex_3_input<Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>>(c3t3);
 }
 
 /// \ingroup PkgPRStarOctreeRef
 /// Adapts a mesh complex (see `Mesh_complex_3_input`) with a scalar field given as a functor
 /// `double(Vertex_handle)` or a vertex property map.
-template <class C3T3, class ScalarFieldOrMap>
-Mesh_complex_3_input<C3T3> make_input(const C3T3& c3t3, const ScalarFieldOrMap& field) {
-  return Mesh_complex_3_input<C3T3>(c3t3, field);
+template <class Tr, class CornerIndex, class CurveIndex, class ScalarFieldOrMap>
+Mesh_complex_3_input<Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>>
+make_input(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>& c3t3, const ScalarFieldOrMap& field) {
+  return Mesh_complex_3_input<Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>>(c3t3, field);
 }
 
 /// \ingroup PkgPRStarOctreeRef
