@@ -8,6 +8,7 @@
 
 #include "generate.h"
 
+#include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/Index_arrays_input.h>
 #include <CGAL/PR_star_octree/Mesh_complex_3_input.h>
 
@@ -152,6 +153,23 @@ void check_adapter(const C3t3& c3t3, const std::string& name, bool convex) {
   const auto from_arrays = CGAL::PR_star_octree::make_input(mesh.points, mesh.tetrahedra);
   const auto from_mesh = CGAL::PR_star_octree::make_input(mesh);
   CHECK(from_arrays.number_of_tetrahedra() == nt && from_mesh.number_of_vertices() == nv);
+
+  // the adapter is a PRStarOctreeInputMesh: build the octree from it and map back
+  const CGAL::PR_star_octree_3<> octree(with_functor, 20);
+  CHECK(octree.number_of_vertices() == nv && octree.number_of_tetrahedra() == nt);
+  CHECK(octree.has_scalar_field());
+  bool octree_ok = octree.number_of_vertices() == nv && octree.number_of_tetrahedra() == nt;
+  for (std::size_t v = 0; octree_ok && v < nv; ++v) {
+    const std::size_t o = octree.original_vertex(static_cast<std::uint32_t>(v));
+    octree_ok = octree.point(static_cast<std::uint32_t>(v)) == input.point(o) &&
+                octree.scalars()[v] == with_functor.scalar(o);
+  }
+  for (t = 0; octree_ok && t < nt; ++t) {
+    const auto tet = octree.tetrahedron(static_cast<std::uint32_t>(t));
+    const std::array<std::size_t, 4> original = input.tetrahedron(octree.original_tetrahedron(static_cast<std::uint32_t>(t)));
+    for (int k = 0; k < 4; ++k) octree_ok = octree_ok && octree.original_vertex(tet[k]) == original[k];
+  }
+  CHECK(octree_ok);
 }
 
 // Validity of an indexed mesh: indices in range, every vertex used, every tetrahedron positively
