@@ -43,7 +43,9 @@ using Octree = CGAL::PR_star_octree_3<>;
 using Local = CGAL::PR_star_octree::Leaf_topology<Octree>;
 using Index = std::uint32_t;
 
-double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 std::size_t status_kib(const char* key) {
   std::ifstream f("/proc/self/status");
@@ -115,7 +117,8 @@ std::size_t mesh_bytes(const Mesh& m) {
 Result run_prstar(const Mesh& mesh, std::size_t kv, int reps) {
   Result r;
   std::unique_ptr<Octree> tree;
-  r.build_seconds = best_of(reps, [&] { tree = std::make_unique<Octree>(CGAL::PR_star_octree::make_input(mesh), kv); });
+  r.build_seconds =
+      best_of(reps, [&] { tree = std::make_unique<Octree>(CGAL::PR_star_octree::make_input(mesh), kv); });
   const auto s = tree->statistics();
   r.nodes = s.nodes;
   r.leaves = s.leaves;
@@ -127,10 +130,12 @@ Result run_prstar(const Mesh& mesh, std::size_t kv, int reps) {
   std::size_t local_bytes = 0;
   r.vt_seconds = best_of(reps, [&] {
     std::size_t sum = 0;
-    CGAL::PR_star_octree::for_each_leaf(*tree, CGAL::PR_star_octree::VERTEX_TETRAHEDRA, [&](const Local& local) {
-      for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v) sum += local.vertex_tetrahedra(v).size();
-      local_bytes = std::max(local_bytes, local.memory_bytes());
-    });
+    CGAL::PR_star_octree::for_each_leaf(*tree, CGAL::PR_star_octree::VERTEX_TETRAHEDRA,
+                                        [&](const Local& local) {
+                                          for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v)
+                                            sum += local.vertex_tetrahedra(v).size();
+                                          local_bytes = std::max(local_bytes, local.memory_bytes());
+                                        });
     r.checksum = sum;
   });
   return r;
@@ -139,8 +144,9 @@ Result run_prstar(const Mesh& mesh, std::size_t kv, int reps) {
 Result run_ia(const Mesh& mesh, int reps) {
   Result r;
   std::unique_ptr<prstar_baselines::Extended_IA<Index>> ia;
-  r.build_seconds =
-      best_of(reps, [&] { ia = std::make_unique<prstar_baselines::Extended_IA<Index>>(mesh.points.size(), mesh.tetrahedra); });
+  r.build_seconds = best_of(reps, [&] {
+    ia = std::make_unique<prstar_baselines::Extended_IA<Index>>(mesh.points.size(), mesh.tetrahedra);
+  });
   r.overhead_bytes = ia->overhead_bytes();
   r.bytes = r.overhead_bytes + mesh_bytes(mesh);
   const double V = double(mesh.points.size()), T = double(mesh.tetrahedra.size());
@@ -187,7 +193,9 @@ std::string base_name(const std::string& p) {
   return s == std::string::npos ? p : p.substr(s + 1);
 }
 
-std::string kv_name(std::size_t kv) { return kv == Octree::infinite_bucket_size ? "inf" : std::to_string(kv); }
+std::string kv_name(std::size_t kv) {
+  return kv == Octree::infinite_bucket_size ? "inf" : std::to_string(kv);
+}
 
 std::string fmt(const char* f, double v) {
   char b[64];
@@ -205,22 +213,28 @@ int main(int argc, char** argv) {
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--reps" && i + 1 < argc) reps = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--csv" && i + 1 < argc) csv_file = argv[++i];
-    else if (a == "--no-cgal") with_cgal = false;
+    if (a == "--reps" && i + 1 < argc)
+      reps = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--csv" && i + 1 < argc)
+      csv_file = argv[++i];
+    else if (a == "--no-cgal")
+      with_cgal = false;
     else if (a == "--kv" && i + 1 < argc) {
       kvs.clear();
       std::stringstream s(argv[++i]);
       std::string item;
-      while (std::getline(s, item, ',')) kvs.push_back(item == "inf" ? Octree::infinite_bucket_size : std::stoull(item));
+      while (std::getline(s, item, ','))
+        kvs.push_back(item == "inf" ? Octree::infinite_bucket_size : std::stoull(item));
     } else if (!a.empty() && a[0] == '-') {
-      std::cerr << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--no-cgal] [--csv OUT.csv] MESH...\n";
+      std::cerr
+          << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--no-cgal] [--csv OUT.csv] MESH...\n";
       return 2;
     } else
       files.push_back(a);
   }
   if (files.empty()) {
-    std::cerr << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--no-cgal] [--csv OUT.csv] MESH...\n";
+    std::cerr
+        << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--no-cgal] [--csv OUT.csv] MESH...\n";
     return 2;
   }
 
@@ -228,10 +242,13 @@ int main(int argc, char** argv) {
   csv << "mesh,vertices,tetrahedra,structure,order,kv,nodes,leaves,chi,cost_overhead_per_vertex,"
          "cost_total_per_vertex,bytes,overhead_bytes,bytes_per_tet,peak_rss_bytes,build_seconds,vt_seconds,"
          "vt_vs_ia_file,vt_vs_ia_same_order,vt_vs_cgal_same_order,vt_vs_stream,bytes_vs_ia,bytes_vs_cgal\n";
-  std::cout << "| mesh | structure | order | k_v | |N| | |N_leaf| | chi | cost overhead/|V| | cost total/|V| | bytes | "
-               "B/tet | peak RSS | build s | VT s | VT/IA (file) | VT/IA (same order) | VT/CGAL (same order) | "
-               "VT/stream | bytes/IA | bytes/CGAL |\n"
-            << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::cout
+      << "| mesh | structure | order | k_v | |N| | |N_leaf| | chi | cost overhead/|V| | cost total/|V| | "
+         "bytes | "
+         "B/tet | peak RSS | build s | VT s | VT/IA (file) | VT/IA (same order) | VT/CGAL (same order) | "
+         "VT/stream | bytes/IA | bytes/CGAL |\n"
+      << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+         "\n";
 
   for (const std::string& file : files) {
     Mesh file_mesh;
@@ -266,12 +283,15 @@ int main(int argc, char** argv) {
     rows.push_back({"extended IA", "PR-star", "-", in_child([&] { return run_ia(ordered, reps); })});
     if (with_cgal) {
       std::cerr << "  CGAL Triangulation_3 ...\n";
-      rows.push_back({"CGAL Triangulation_3", "file", "-", in_child([&] { return run_cgal(file_mesh, reps); })});
-      rows.push_back({"CGAL Triangulation_3", "PR-star", "-", in_child([&] { return run_cgal(ordered, reps); })});
+      rows.push_back(
+          {"CGAL Triangulation_3", "file", "-", in_child([&] { return run_cgal(file_mesh, reps); })});
+      rows.push_back(
+          {"CGAL Triangulation_3", "PR-star", "-", in_child([&] { return run_cgal(ordered, reps); })});
     }
     for (std::size_t kv : kvs) {
       std::cerr << "  PR-star k_v = " << kv_name(kv) << " ...\n";
-      rows.push_back({"PR-star", "file", kv_name(kv), in_child([&] { return run_prstar(file_mesh, kv, reps); })});
+      rows.push_back(
+          {"PR-star", "file", kv_name(kv), in_child([&] { return run_prstar(file_mesh, kv, reps); })});
     }
     const Result& ia_file = rows[0].r;
     const Result& ia_same = rows[1].r;
@@ -284,8 +304,8 @@ int main(int argc, char** argv) {
         continue;
       }
       if (r.checksum != ia_file.checksum)
-        std::cerr << "  warning: " << row.structure << " VT checksum " << r.checksum << " != IA " << ia_file.checksum
-                  << '\n';
+        std::cerr << "  warning: " << row.structure << " VT checksum " << r.checksum << " != IA "
+                  << ia_file.checksum << '\n';
       const bool pr = row.structure == "PR-star";
       const double vs_ia_file = r.vt_seconds / ia_file.vt_seconds;
       const double vs_ia_same = r.vt_seconds / ia_same.vt_seconds;
@@ -294,21 +314,23 @@ int main(int argc, char** argv) {
       const double bytes_ia = double(r.bytes) / double(ia_file.bytes);
       const double bytes_cgal = cgal_same && cgal_same->ok ? double(r.bytes) / double(cgal_same->bytes) : 0;
       std::cout << "| " << name << " | " << row.structure << " | " << row.order << " | " << row.kv << " | "
-                << (pr ? std::to_string(r.nodes) : "-") << " | " << (pr ? std::to_string(r.leaves) : "-") << " | "
-                << (pr ? fmt("%.3f", r.chi) : "-") << " | "
+                << (pr ? std::to_string(r.nodes) : "-") << " | " << (pr ? std::to_string(r.leaves) : "-")
+                << " | " << (pr ? fmt("%.3f", r.chi) : "-") << " | "
                 << (r.cost_overhead > 0 ? fmt("%.2f", r.cost_overhead) : "-") << " | "
                 << (r.cost_total > 0 ? fmt("%.2f", r.cost_total) : "-") << " | " << r.bytes << " | "
-                << fmt("%.1f", double(r.bytes) / T) << " | " << fmt("%.1f MiB", double(r.peak_rss_bytes) / 1048576.)
-                << " | " << fmt("%.4f", r.build_seconds) << " | " << fmt("%.4f", r.vt_seconds) << " | "
+                << fmt("%.1f", double(r.bytes) / T) << " | "
+                << fmt("%.1f MiB", double(r.peak_rss_bytes) / 1048576.) << " | "
+                << fmt("%.4f", r.build_seconds) << " | " << fmt("%.4f", r.vt_seconds) << " | "
                 << fmt("%.2f", vs_ia_file) << " | " << fmt("%.2f", vs_ia_same) << " | "
                 << (vs_cgal > 0 ? fmt("%.3f", vs_cgal) : "-") << " | " << fmt("%.1f", vs_stream) << " | "
-                << fmt("%.2f", bytes_ia) << " | " << (bytes_cgal > 0 ? fmt("%.3f", bytes_cgal) : "-") << " |\n";
-      csv << name << ',' << file_mesh.points.size() << ',' << file_mesh.tetrahedra.size() << ',' << row.structure
-          << ',' << row.order << ',' << row.kv << ',' << (pr ? r.nodes : 0) << ',' << (pr ? r.leaves : 0) << ','
-          << r.chi << ',' << r.cost_overhead << ',' << r.cost_total << ',' << r.bytes << ',' << r.overhead_bytes
-          << ',' << double(r.bytes) / T << ',' << r.peak_rss_bytes << ',' << r.build_seconds << ',' << r.vt_seconds
-          << ',' << vs_ia_file << ',' << vs_ia_same << ',' << vs_cgal << ',' << vs_stream << ',' << bytes_ia << ','
-          << bytes_cgal << '\n';
+                << fmt("%.2f", bytes_ia) << " | " << (bytes_cgal > 0 ? fmt("%.3f", bytes_cgal) : "-")
+                << " |\n";
+      csv << name << ',' << file_mesh.points.size() << ',' << file_mesh.tetrahedra.size() << ','
+          << row.structure << ',' << row.order << ',' << row.kv << ',' << (pr ? r.nodes : 0) << ','
+          << (pr ? r.leaves : 0) << ',' << r.chi << ',' << r.cost_overhead << ',' << r.cost_total << ','
+          << r.bytes << ',' << r.overhead_bytes << ',' << double(r.bytes) / T << ',' << r.peak_rss_bytes
+          << ',' << r.build_seconds << ',' << r.vt_seconds << ',' << vs_ia_file << ',' << vs_ia_same << ','
+          << vs_cgal << ',' << vs_stream << ',' << bytes_ia << ',' << bytes_cgal << '\n';
     }
     std::cout << "| " << name << " | streaming pass over T | file | - | | | | | | | | | | "
               << fmt("%.4f", stream) << " | | | | 1.0 | | |\n";

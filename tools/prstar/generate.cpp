@@ -464,8 +464,10 @@ CGAL::PR_star_octree::Indexed_tetrahedral_mesh<> generate_mesh(const Generate_op
     }
     progress.say("filling the surface (" + std::to_string(soup.points.size()) + " vertices, " +
                  std::to_string(soup.triangles.size()) + " triangles) with TetGen ...");
-    // volume of a regular tetrahedron of edge cell_size
-    const double max_volume = std::pow(sizes.cell_size, 3) * std::sqrt(2.) / 12.;
+    // Mesh_3's cell_size bounds the circumradius: use the volume of the regular tetrahedron whose
+    // circumradius is cell_size (edge 4 / sqrt(6) cell_size, volume 8 / (9 sqrt(3)) cell_size^3),
+    // so that both meshers give meshes of comparable density for the same --cell-size.
+    const double max_volume = std::pow(sizes.cell_size, 3) * 8. / (9. * std::sqrt(3.));
     mesh = run_tetgen(soup, max_volume);
   }
   progress.done(mesh.number_of_vertices(), mesh.number_of_tetrahedra());

@@ -11,6 +11,7 @@
 
 #include <sys/stat.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -210,7 +211,12 @@ bool file_exists(const std::string& f) {
 
 // Writes through a temporary file renamed at the end: an error never leaves a half-written OUT.
 void write_mesh_safely(const std::string& out, const Mesh& mesh) {
-  const std::string tmp = out + ".prstar-tmp";
+  // The temporary name keeps the extension, which selects the format: OUT.mesh -> OUT.prstar-tmp.mesh
+  const std::size_t dot = out.find_last_of('.');
+  const std::size_t slash = out.find_last_of('/');
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  const std::string tmp =
+      has_ext ? out.substr(0, dot) + ".prstar-tmp" + out.substr(dot) : out + ".prstar-tmp";
   try {
     CGAL::PR_star_octree::IO::write_tetrahedral_mesh(tmp, mesh);
   } catch (...) {
@@ -240,6 +246,7 @@ int cmd_generate(int argc, char** argv) {
   if (!(opt.cell_size > 0)) throw Usage_error("--cell-size must be positive");
   if (opt.facet_size < 0 || opt.facet_distance < 0) throw Usage_error("sizes must be positive");
   opt.tetgen = args.flag("--tetgen");
+  // The generator's own progress messages are finer than ours: let it speak, and keep ours silent.
   opt.quiet = args.flag("--quiet") || args.flag("--json");
   if (args.has("-o") && args.has("--output")) throw Usage_error("give -o or --output once");
   const std::string out = args.has("-o") ? args.get("-o") : args.get("--output");
@@ -251,9 +258,9 @@ int cmd_generate(int argc, char** argv) {
     throw std::runtime_error(out + ": the file exists (use --force to overwrite it)");
 
   prstar::Progress progress(opt.quiet);
-  progress.phase(std::string("meshing with ") + (opt.tetgen ? "TetGen" : "CGAL Mesh_3"));
+  const auto start = std::chrono::steady_clock::now();
   const Mesh mesh = prstar::generate_mesh(opt);
-  const double seconds = progress.seconds();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.phase("writing " + out);
   write_mesh_safely(out, mesh);
   progress.finish();
@@ -320,7 +327,8 @@ int main(int argc, char** argv) {
       std::cout << c.usage;
       if (command == "generate") {
         std::cout << "\nshapes:\n";
-        for (const auto& s : prstar::implicit_shapes()) std::cout << "  " << s.first << ": " << s.second << '\n';
+        for (const auto& s : prstar::implicit_shapes())
+          std::cout << "  " << s.first << ": " << s.second << '\n';
       }
       return 0;
     }
