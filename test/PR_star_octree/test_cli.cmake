@@ -37,7 +37,7 @@ run(0 "usage: prstar demo" "" demo --help)
 # stats: table and JSON with the stable keys; exact |V| and |T| against the file's own header.
 run(0 "k_v.*chi.*\n.*\n50 " "" stats ${DATA}/sphere.mesh --quiet)
 run(0 "" "" stats ${DATA}/sphere.mesh --json)
-foreach(key vertices tetrahedra kv nodes leaves depth chi storage prstar_overhead_per_vertex
+foreach(key vertices tetrahedra edges triangles boundary_triangles euler_characteristic kv nodes leaves depth chi storage prstar_overhead_per_vertex
             prstar_total_per_vertex ia_overhead_per_vertex ia_total_per_vertex bytes)
   if(NOT last_out MATCHES "\"${key}\": ")
     message(SEND_ERROR "stats --json lacks the key ${key}: ${last_out}")
@@ -58,6 +58,16 @@ if(NOT nv EQUAL header_nv OR NOT nt EQUAL header_nt)
   message(SEND_ERROR "stats --json: ${nv} ${nt}, the file says ${header_nv} ${header_nt}")
 endif()
 run(0 "\"kv\": \"inf\".*\"leaves\": 1," "" stats ${DATA}/sphere.mesh --kv inf --json)
+# A ball: Euler characteristic 1; a torus: 0 (independent truth: the topology of the shapes).
+string(JSON euler GET "${last_out}" euler_characteristic)
+if(NOT euler EQUAL 1)
+  message(SEND_ERROR "sphere.mesh: Euler characteristic ${euler}, expected 1")
+endif()
+run(0 "" "" stats ${DATA}/torus.mesh --kv 7 --json)
+string(JSON euler GET "${last_out}" euler_characteristic)
+if(NOT euler EQUAL 0)
+  message(SEND_ERROR "torus.mesh: Euler characteristic ${euler}, expected 0")
+endif()
 run(0 "^\\[.*\\]" "" stats ${DATA}/torus.mesh --kv 10,inf --json)
 
 # stats: errors.

@@ -8,6 +8,7 @@
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/IO.h>
+#include <CGAL/PR_star_octree/Leaf_topology.h>
 
 #include <sys/stat.h>
 
@@ -98,9 +99,13 @@ std::vector<std::size_t> parse_bucket_list(const std::string& s) {
   return r;
 }
 
-void statistics_json(prstar::Json& j, const CGAL::PR_star_octree::Statistics& s) {
+void statistics_json(prstar::Json& j, const CGAL::PR_star_octree::Statistics& s,
+                     const CGAL::PR_star_octree::Simplex_counts& c) {
   j.begin_object();
   j.field("vertices", s.vertices).field("tetrahedra", s.tetrahedra);
+  j.field("edges", c.edges).field("triangles", c.triangles).field("boundary_triangles", c.boundary_triangles);
+  j.field("nonmanifold_triangles", c.nonmanifold_triangles);
+  j.field("euler_characteristic", c.euler_characteristic());
   if (s.infinite_bucket_size)
     j.field("kv", "inf");
   else
@@ -132,17 +137,23 @@ void report_statistics(const Mesh& mesh, const std::string& name, const std::vec
                        std::size_t max_depth, bool json, prstar::Progress& progress) {
   std::vector<CGAL::PR_star_octree::Statistics> stats;
   std::vector<double> seconds;
+  CGAL::PR_star_octree::Simplex_counts counts;
   for (std::size_t kv : kvs) {
     progress.phase("building the PR-star octree (k_v = " + prstar::bucket_size_string(kv) + ")");
     Octree tree(CGAL::PR_star_octree::make_input(mesh), kv, max_depth);
     seconds.push_back(progress.seconds());
     progress.finish();
     stats.push_back(tree.statistics());
+    if (stats.size() == 1) { // the counts do not depend on k_v: compute them once, locally
+      progress.phase("counting edges and triangles leaf by leaf");
+      counts = CGAL::PR_star_octree::count_simplices(tree);
+      progress.finish();
+    }
   }
   if (json) {
     prstar::Json j;
     if (stats.size() > 1) j.begin_array();
-    for (const auto& s : stats) statistics_json(j, s);
+    for (const auto& s : stats) statistics_json(j, s, counts);
     if (stats.size() > 1) j.end_array();
     std::cout << j.str() << '\n';
     return;
@@ -150,6 +161,12 @@ void report_statistics(const Mesh& mesh, const std::string& name, const std::vec
   const auto& s0 = stats.front();
   std::cout << name << ": " << s0.vertices << " vertices, " << s0.tetrahedra << " tetrahedra (|T|/|V| = "
             << prstar::fixed(s0.vertices ? double(s0.tetrahedra) / double(s0.vertices) : 0., 2) << ")\n";
+  std::cout << "  " << counts.edges << " edges, " << counts.triangles << " triangles ("
+            << counts.boundary_triangles << " on the boundary), Euler characteristic "
+            << counts.euler_characteristic() << "\n";
+  if (counts.nonmanifold_triangles)
+    std::cout << "  warning: " << counts.nonmanifold_triangles
+              << " triangles are shared by three or more tetrahedra\n";
   if (s0.reoriented_tetrahedra)
     std::cout << "  " << s0.reoriented_tetrahedra
               << " tetrahedra listed with negative orientation (reoriented)\n";
