@@ -11,9 +11,14 @@
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/IO.h>
 #include <CGAL/PR_star_octree/Leaf_topology.h>
+#include <CGAL/PR_star_octree/boundary.h>
+#include <CGAL/PR_star_octree/distortion.h>
+
+#include <cmath>
 
 #include "baselines/Cgal_triangulation_baseline.h"
 #include "baselines/Extended_IA.h"
+#include "baselines/curvature_baselines.h"
 
 #include <algorithm>
 #include <iostream>
@@ -41,6 +46,7 @@ using Local = CGAL::PR_star_octree::Leaf_topology<Octree>;
 using Index = std::uint32_t;
 using Face = std::array<Index, 3>;
 using EdgeKey = std::pair<Index, Index>;
+using CGAL::PR_star_octree::Vertex_curvature;
 
 bool exists(const std::string& f) {
   struct stat st;
@@ -305,6 +311,84 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
       cgal_stars[key] = s;
     });
     CHECK(cgal_stars.size() == truth.edges.size());
+  }
+
+  // Boundary (paper Section 7) and distortion (Section 8): against brute force, IA and CGAL.
+  {
+    using CGAL::PR_star_octree::Vertex_type;
+    std::vector<char> on_boundary_face(mesh.points.size(), 0);
+    for (const auto& f : truth.faces)
+      if (f.second.size() == 1)
+        for (Index v : f.first) on_boundary_face[v] = 1;
+    const std::vector<char> ia_b = prstar_baselines::ia_boundary(ia);
+    // A non-linear field, or the mesh's own scalar field.
+    std::vector<double> values(mesh.points.size());
+    for (std::size_t v = 0; v < values.size(); ++v) {
+      const auto& p = mesh.points[v];
+      values[v] =
+          mesh.scalar_field() ? mesh.scalar_field()->values[v] : p.x() * p.x() + std::sin(3 * p.y()) + p.z();
+    }
+    auto field = [&](Index v) { return values[v]; };
+    const auto ia_c = prstar_baselines::ia_curvature(mesh.points, mesh.tetrahedra, ia, field);
+    std::vector<Vertex_curvature> cgal_c;
+    if (with_cgal) cgal_c = prstar_baselines::cgal_curvature(mesh.points, mesh.tetrahedra, *cgal_ptr, field);
+    for (std::size_t kv : {std::size_t(3), std::size_t(64), Octree::infinite_bucket_size}) {
+      Octree tree(CGAL::PR_star_octree::make_input(mesh), kv);
+      const auto b = CGAL::PR_star_octree::compute_boundary(tree);
+      CHECK(b.boundary_triangles.size() == truth.boundary_faces());
+      const auto bits = CGAL::PR_star_octree::boundary_bit_array(tree, b);
+      const auto signed_t = CGAL::PR_star_octree::tetrahedra_with_boundary_signs(tree, b);
+      const auto curv = CGAL::PR_star_octree::compute_curvature(
+          tree, CGAL::PR_star_octree::original_order_field(tree, values));
+      const auto linear =
+          CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::coordinate_field(tree, 1));
+      for (Index v = 0; v < mesh.points.size(); ++v) {
+        const Index o = tree.original_vertex(v);
+        const Vertex_type expected = truth.vt[o].empty()                  ? Vertex_type::UNREFERENCED
+                                     : !truth.is_manifold_vertex(mesh, o) ? Vertex_type::NONMANIFOLD
+                                     : on_boundary_face[o]                ? Vertex_type::BOUNDARY
+                                                                          : Vertex_type::INTERIOR;
+        CHECK(b.vertex_type[v] == expected);
+        CHECK(bits[o] == (expected == Vertex_type::BOUNDARY));
+        if (expected == Vertex_type::INTERIOR || expected == Vertex_type::BOUNDARY) {
+          CHECK(bool(ia_b[o]) == (expected == Vertex_type::BOUNDARY));
+          if (with_cgal) CHECK(cgal_ptr->is_boundary_vertex(o) == (expected == Vertex_type::BOUNDARY));
+          // Distortion equal across PR-star, IA and CGAL.
+          CHECK(std::abs(curv[v].distortion - ia_c[o].distortion) <= 1e-9);
+          CHECK(std::abs(curv[v].domain_curvature - ia_c[o].domain_curvature) <= 1e-9);
+          if (with_cgal) CHECK(std::abs(curv[v].distortion - cgal_c[o].distortion) <= 1e-9);
+          // A linear field does not bend the lifted mesh: zero distortion at interior vertices.
+          if (expected == Vertex_type::INTERIOR) CHECK(std::abs(linear[v].distortion) <= 1e-9);
+        } else if (expected == Vertex_type::NONMANIFOLD)
+          CHECK(std::isnan(curv[v].distortion));
+      }
+      for (std::size_t t = 0; t < signed_t.size(); ++t)
+        for (int k = 0; k < 4; ++k) {
+          const auto x = signed_t[t][k];
+          CHECK(CGAL::PR_star_octree::decode_vertex(x) == tree.tetrahedron(static_cast<Index>(t))[k]);
+          CHECK(CGAL::PR_star_octree::is_encoded_boundary(x) ==
+                (b.vertex_type[tree.tetrahedron(static_cast<Index>(t))[k]] == Vertex_type::BOUNDARY));
+        }
+      // Random access and box queries give the same values as the streaming computation.
+      for (Index v = 0; v < mesh.points.size(); v += 97) {
+        const auto one = CGAL::PR_star_octree::curvature_at(
+            tree, v, CGAL::PR_star_octree::original_order_field(tree, values));
+        CHECK(one.type == curv[v].type &&
+              (std::isnan(one.distortion) || one.distortion == curv[v].distortion));
+      }
+      std::vector<std::pair<Index, Vertex_curvature>> in_box;
+      const auto bb = tree.bbox();
+      const CGAL::Bbox_3 box(bb.xmin(), bb.ymin(), bb.zmin(), (bb.xmin() + bb.xmax()) / 2, bb.ymax(),
+                             bb.zmax());
+      CGAL::PR_star_octree::curvature_in_box(
+          tree, box, CGAL::PR_star_octree::original_order_field(tree, values), in_box);
+      std::size_t expected_in_box = 0;
+      for (Index v = 0; v < mesh.points.size(); ++v) expected_in_box += tree.point(v).x() <= box.xmax();
+      CHECK(in_box.size() == expected_in_box);
+      for (const auto& e : in_box)
+        CHECK(e.second.type == curv[e.first].type &&
+              (std::isnan(e.second.distortion) || e.second.distortion == curv[e.first].distortion));
+    }
   }
 
   for (std::size_t kv : kvs) {

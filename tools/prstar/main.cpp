@@ -9,6 +9,8 @@
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/IO.h>
 #include <CGAL/PR_star_octree/Leaf_topology.h>
+#include <CGAL/PR_star_octree/boundary.h>
+#include <CGAL/PR_star_octree/distortion.h>
 
 #include <sys/stat.h>
 
@@ -16,6 +18,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <fstream>
+#include <iomanip>
+#include <limits>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -33,7 +38,9 @@ usage: prstar COMMAND [options]
 
 commands:
   demo       build the PR-star octree of a built-in mesh (CGAL Mesh_3 unit ball) and show its statistics
-  stats      storage statistics of the PR-star octree of a mesh (paper Table 1)
+  stats      storage statistics of the PR-star octree of a mesh (paper Table 1) and simplex counts
+  boundary   boundary and non-manifold vertices, boundary triangles and tetrahedra (paper Section 7)
+  curvature  discrete distortion of a scalar field at every vertex (paper Section 8)
   generate   make a tetrahedral mesh with CGAL Mesh_3 or TetGen
 
 Run 'prstar COMMAND --help' for the options of a command.
@@ -77,6 +84,43 @@ const char* const demo_usage = R"(usage: prstar demo [--cell-size S] [--kv N|inf
 
 Meshes the unit ball with CGAL Mesh_3 (no input file needed) and prints the statistics of its
 PR-star octree for several bucket thresholds k_v (default 10,20,50,100,200,inf).
+)";
+
+const char* const boundary_usage =
+    R"(usage: prstar boundary MESH [--kv N] [--json] [-o OUT.vtu [--force]] [--quiet]
+
+Classifies every vertex of MESH as interior, boundary or non-manifold, leaf by leaf (paper
+Section 7: 2|e| != 3|t| in the vertex link, plus a check that the link is a sphere or a disc).
+
+options:
+  --kv N          bucket threshold of the octree (default 50)
+  --json          one JSON object on stdout: boundary_vertices, boundary_triangles,
+                  boundary_tetrahedra (tetrahedra with a boundary or non-manifold vertex),
+                  boundary_face_tetrahedra (with a face on the boundary), nonmanifold_vertices, ...
+  -o OUT.vtu      write the mesh with the point arrays `boundary` (0 interior, 1 boundary,
+                  2 non-manifold, 3 in no tetrahedron) for ParaView
+  --force         overwrite OUT if it exists
+  --quiet         no progress on stderr
+)";
+
+const char* const curvature_usage =
+    R"(usage: prstar curvature MESH [--field NAME|x|y|z] [--kv N] [--json] [-o OUT.vtu] [--csv OUT.csv] [--force] [--quiet]
+
+Discrete distortion of a scalar field at every vertex (paper Section 8): the field lifts the mesh
+into R^4; the distortion at v is (4 pi, or the sum of the 3D solid angles on the boundary) minus
+the sum of the solid angles at v of the lifted tetrahedra of its star.  Also computes the 3D
+concentrated curvature of the domain ((4 pi or 2 pi) minus the sum of the 3D solid angles).
+Non-manifold vertices get NaN.
+
+options:
+  --field NAME    a point-data array of MESH (default: its first one), or x, y, z for a coordinate
+  --kv N          bucket threshold of the octree (default 50)
+  --json          a JSON summary on stdout
+  -o OUT.vtu      the mesh with point arrays `boundary`, `distortion`, `domain_curvature`
+  --csv OUT.csv   one row per input vertex, in the input order: vertex,x,y,z,boundary,distortion
+                  (boundary: 0 interior, 1 boundary, 2 non-manifold, 3 in no tetrahedron)
+  --force         overwrite existing output files
+  --quiet         no progress on stderr
 )";
 
 bool wants_help(int argc, char** argv) {
@@ -298,6 +342,250 @@ int cmd_generate(int argc, char** argv) {
   return 0;
 }
 
+// Refuses to overwrite an input or (without --force) an existing file; checks the extension.
+void check_output(const std::string& out, const std::string& input, bool force,
+                  const std::string& extension) {
+  if (out == input) throw Usage_error("the output " + out + " would overwrite the input");
+  if (out.size() < extension.size() ||
+      out.compare(out.size() - extension.size(), extension.size(), extension) != 0)
+    throw Usage_error(out + ": the output must be a " + extension + " file");
+  if (file_exists(out) && !force)
+    throw std::runtime_error(out + ": the file exists (use --force to overwrite it)");
+}
+
+// The mesh as the user gave it, with extra point arrays (user order), written through a temporary.
+void write_vtu_safely(const std::string& out, const Mesh& mesh,
+                      const std::vector<CGAL::PR_star_octree::Point_data_array>& arrays) {
+  const std::string tmp = out.substr(0, out.size() - 4) + ".prstar-tmp.vtu";
+  try {
+    CGAL::PR_star_octree::IO::write_vtu(tmp, mesh, arrays);
+  } catch (...) {
+    std::remove(tmp.c_str());
+    throw;
+  }
+  if (std::rename(tmp.c_str(), out.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(out + ": cannot write the output file");
+  }
+}
+
+std::size_t parse_single_kv(const Arguments& args) {
+  const std::vector<std::size_t> kvs = parse_bucket_list(args.get("--kv", "50"));
+  if (kvs.size() != 1) throw Usage_error("--kv takes one value here");
+  return kvs[0];
+}
+
+double type_code(CGAL::PR_star_octree::Vertex_type t) {
+  using CGAL::PR_star_octree::Vertex_type;
+  switch (t) {
+  case Vertex_type::INTERIOR:
+    return 0;
+  case Vertex_type::BOUNDARY:
+    return 1;
+  case Vertex_type::NONMANIFOLD:
+    return 2;
+  default:
+    return 3;
+  }
+}
+
+int cmd_boundary(int argc, char** argv) {
+  Arguments args(argc, argv, 2, {"--json", "--quiet", "--force"}, {"--kv", "-o", "--output"});
+  if (args.positional().size() != 1)
+    throw Usage_error(args.positional().empty() ? "missing MESH" : "expected one MESH, got several");
+  const std::string input = args.positional()[0];
+  const std::size_t kv = parse_single_kv(args);
+  const std::string out = args.has("-o") ? args.get("-o") : args.get("--output");
+  if (!out.empty()) check_output(out, input, args.flag("--force"), ".vtu");
+  prstar::Progress progress(args.flag("--quiet") || args.flag("--json"));
+  const Mesh mesh = read_mesh(input, progress);
+  progress.phase("building the PR-star octree and classifying the vertices");
+  const auto start = std::chrono::steady_clock::now();
+  Octree tree(CGAL::PR_star_octree::make_input(mesh), kv);
+  const auto b = CGAL::PR_star_octree::compute_boundary(tree);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.finish();
+  if (!out.empty()) {
+    progress.phase("writing " + out);
+    CGAL::PR_star_octree::Point_data_array a{"boundary", std::vector<double>(mesh.points.size())};
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+      a.values[tree.original_vertex(static_cast<Octree::Index>(v))] = type_code(b.vertex_type[v]);
+    write_vtu_safely(out, mesh, {a});
+    progress.finish();
+  }
+  if (args.flag("--json")) {
+    prstar::Json j;
+    j.begin_object()
+        .field("vertices", mesh.points.size())
+        .field("tetrahedra", mesh.tetrahedra.size())
+        .field("kv", prstar::bucket_size_string(kv))
+        .field("boundary_vertices", b.boundary_vertices)
+        .field("interior_vertices", b.interior_vertices)
+        .field("nonmanifold_vertices", b.nonmanifold_vertices)
+        .field("unreferenced_vertices", b.unreferenced_vertices)
+        .field("boundary_triangles", b.boundary_triangles.size())
+        .field("boundary_tetrahedra", b.boundary_tetrahedra)
+        .field("boundary_face_tetrahedra", b.boundary_face_tetrahedra)
+        .field("seconds", seconds);
+    if (!out.empty()) j.field("output", out);
+    j.end_object();
+    std::cout << j.str() << '\n';
+    return 0;
+  }
+  prstar::Table t({"", "count"});
+  t.add({"vertices", std::to_string(mesh.points.size())});
+  t.add({"  interior", std::to_string(b.interior_vertices)});
+  t.add({"  boundary", std::to_string(b.boundary_vertices)});
+  t.add({"  non-manifold", std::to_string(b.nonmanifold_vertices)});
+  t.add({"  in no tetrahedron", std::to_string(b.unreferenced_vertices)});
+  t.add({"boundary triangles", std::to_string(b.boundary_triangles.size())});
+  t.add({"tetrahedra touching the boundary", std::to_string(b.boundary_tetrahedra)});
+  t.add({"  with a boundary face", std::to_string(b.boundary_face_tetrahedra)});
+  std::cout << input << " (k_v = " << prstar::bucket_size_string(kv) << ", " << prstar::fixed(seconds, 3)
+            << " s)\n"
+            << t.str();
+  if (b.nonmanifold_vertices)
+    std::cout << "warning: " << b.nonmanifold_vertices
+              << " vertices have a link that is neither a sphere nor a disc (non-manifold)\n";
+  if (!out.empty()) std::cout << "wrote " << out << '\n';
+  return 0;
+}
+
+int cmd_curvature(int argc, char** argv) {
+  Arguments args(argc, argv, 2, {"--json", "--quiet", "--force"},
+                 {"--kv", "--field", "-o", "--output", "--csv"});
+  if (args.positional().size() != 1)
+    throw Usage_error(args.positional().empty() ? "missing MESH" : "expected one MESH, got several");
+  const std::string input = args.positional()[0];
+  const std::size_t kv = parse_single_kv(args);
+  const std::string out = args.has("-o") ? args.get("-o") : args.get("--output");
+  const std::string csv = args.get("--csv");
+  if (!out.empty()) check_output(out, input, args.flag("--force"), ".vtu");
+  if (!csv.empty()) check_output(csv, input, args.flag("--force"), ".csv");
+  if (!out.empty() && out == csv) throw Usage_error("-o and --csv name the same file");
+  prstar::Progress progress(args.flag("--quiet") || args.flag("--json"));
+  const Mesh mesh = read_mesh(input, progress);
+
+  // The field, in the user's vertex order.
+  std::string field_name = args.get("--field");
+  std::vector<double> values(mesh.points.size());
+  if (field_name == "x" || field_name == "y" || field_name == "z") {
+    const int axis = field_name[0] - 'x';
+    for (std::size_t v = 0; v < values.size(); ++v)
+      values[v] = axis == 0 ? mesh.points[v].x() : axis == 1 ? mesh.points[v].y() : mesh.points[v].z();
+  } else {
+    const CGAL::PR_star_octree::Point_data_array* a =
+        field_name.empty() ? mesh.scalar_field() : mesh.find_point_data(field_name);
+    if (!a) {
+      std::string known;
+      for (const auto& d : mesh.point_data) known += (known.empty() ? "" : ", ") + d.name;
+      throw std::runtime_error(input + ": " +
+                               (field_name.empty() ? std::string("the mesh has no point data")
+                                                   : "no point-data array named '" + field_name + "'") +
+                               (known.empty() ? "" : " (it has: " + known + ")") +
+                               "; use --field x|y|z for a coordinate");
+    }
+    field_name = a->name;
+    values = a->values;
+  }
+  for (std::size_t v = 0; v < values.size(); ++v)
+    if (!std::isfinite(values[v]))
+      throw std::runtime_error(input + ": field '" + field_name + "' is not finite at vertex " +
+                               std::to_string(v));
+
+  progress.phase("building the PR-star octree and computing the distortion");
+  const auto start = std::chrono::steady_clock::now();
+  Octree tree(CGAL::PR_star_octree::make_input(mesh), kv);
+  const auto curv =
+      CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::original_order_field(tree, values));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.finish();
+
+  // Back to the user's order.
+  const std::size_t nv = mesh.points.size();
+  CGAL::PR_star_octree::Point_data_array boundary{"boundary", std::vector<double>(nv)},
+      distortion{"distortion", std::vector<double>(nv)}, domain{"domain_curvature", std::vector<double>(nv)};
+  std::size_t counts[4] = {0, 0, 0, 0};
+  double dmin = std::numeric_limits<double>::infinity(), dmax = -dmin, dsum = 0;
+  std::size_t dn = 0;
+  for (std::size_t v = 0; v < nv; ++v) {
+    const auto o = tree.original_vertex(static_cast<Octree::Index>(v));
+    const auto& c = curv[v];
+    boundary.values[o] = type_code(c.type);
+    distortion.values[o] = c.distortion;
+    domain.values[o] = c.domain_curvature;
+    ++counts[static_cast<int>(type_code(c.type))];
+    if (c.type == CGAL::PR_star_octree::Vertex_type::INTERIOR ||
+        c.type == CGAL::PR_star_octree::Vertex_type::BOUNDARY) {
+      dmin = std::min(dmin, c.distortion);
+      dmax = std::max(dmax, c.distortion);
+      dsum += c.distortion;
+      ++dn;
+    }
+  }
+  if (!out.empty()) {
+    progress.phase("writing " + out);
+    write_vtu_safely(out, mesh, {boundary, distortion, domain});
+    progress.finish();
+  }
+  if (!csv.empty()) {
+    progress.phase("writing " + csv);
+    const std::string tmp = csv.substr(0, csv.size() - 4) + ".prstar-tmp.csv";
+    {
+      std::ofstream f(tmp);
+      f << std::setprecision(std::numeric_limits<double>::max_digits10);
+      f << "vertex,x,y,z,boundary,distortion\n";
+      for (std::size_t v = 0; v < nv; ++v)
+        f << v << ',' << mesh.points[v].x() << ',' << mesh.points[v].y() << ',' << mesh.points[v].z() << ','
+          << static_cast<int>(boundary.values[v]) << ',' << distortion.values[v] << '\n';
+      f.flush();
+      if (!f) {
+        std::remove(tmp.c_str());
+        throw std::runtime_error(csv + ": cannot write the output file");
+      }
+    }
+    if (std::rename(tmp.c_str(), csv.c_str()) != 0) {
+      std::remove(tmp.c_str());
+      throw std::runtime_error(csv + ": cannot write the output file");
+    }
+    progress.finish();
+  }
+  if (args.flag("--json")) {
+    prstar::Json j;
+    j.begin_object()
+        .field("vertices", nv)
+        .field("tetrahedra", mesh.tetrahedra.size())
+        .field("kv", prstar::bucket_size_string(kv))
+        .field("field", field_name)
+        .field("interior_vertices", counts[0])
+        .field("boundary_vertices", counts[1])
+        .field("nonmanifold_vertices", counts[2])
+        .field("unreferenced_vertices", counts[3]);
+    if (dn)
+      j.field("distortion_min", dmin)
+          .field("distortion_max", dmax)
+          .field("distortion_mean", dsum / double(dn));
+    j.field("seconds", seconds);
+    if (!out.empty()) j.field("output", out);
+    if (!csv.empty()) j.field("csv", csv);
+    j.end_object();
+    std::cout << j.str() << '\n';
+    return 0;
+  }
+  std::cout << input << ": distortion of '" << field_name << "' (k_v = " << prstar::bucket_size_string(kv)
+            << ", " << prstar::fixed(seconds, 3) << " s)\n";
+  prstar::Table t({"vertices", "count", "distortion min", "max", "mean"});
+  t.add({"all manifold", std::to_string(dn), dn ? prstar::fixed(dmin, 6) : "-",
+         dn ? prstar::fixed(dmax, 6) : "-", dn ? prstar::fixed(dsum / double(dn), 6) : "-"});
+  t.add({"interior", std::to_string(counts[0]), "", "", ""});
+  t.add({"boundary", std::to_string(counts[1]), "", "", ""});
+  t.add({"non-manifold (NaN)", std::to_string(counts[2]), "", "", ""});
+  std::cout << t.str();
+  if (!out.empty()) std::cout << "wrote " << out << '\n';
+  if (!csv.empty()) std::cout << "wrote " << csv << '\n';
+  return 0;
+}
+
 int cmd_demo(int argc, char** argv) {
   Arguments args(argc, argv, 2, {"--json", "--quiet"}, {"--cell-size", "--kv"});
   if (!args.positional().empty()) throw Usage_error("unexpected argument '" + args.positional()[0] + "'");
@@ -337,6 +625,8 @@ int main(int argc, char** argv) {
   };
   const Command commands[] = {{"stats", stats_usage, cmd_stats},
                               {"generate", generate_usage, cmd_generate},
+                              {"boundary", boundary_usage, cmd_boundary},
+                              {"curvature", curvature_usage, cmd_curvature},
                               {"demo", demo_usage, cmd_demo}};
   for (const Command& c : commands) {
     if (command != c.name) continue;
