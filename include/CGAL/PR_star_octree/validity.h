@@ -1,0 +1,138 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_VALIDITY_H
+#define CGAL_PR_STAR_OCTREE_VALIDITY_H
+
+/// \file validity.h
+/// A validity checker for tetrahedral meshes, computed leaf by leaf on a PR-star octree:
+/// orientation of every tetrahedron (exact predicate), flat tetrahedra, non-manifold triangles and
+/// vertices, Euler characteristic and number of boundary components.
+
+#include <CGAL/PR_star_octree.h>
+#include <CGAL/PR_star_octree/Index_arrays_input.h>
+#include <CGAL/PR_star_octree/Leaf_topology.h>
+#include <CGAL/PR_star_octree/boundary.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <tuple>
+#include <vector>
+
+namespace CGAL {
+namespace PR_star_octree {
+
+/// \ingroup PkgPRStarOctreeRef
+/// The result of `check_validity()`.
+///
+/// **Orientation rule.**  A mesh is consistently oriented when all its non-flat tetrahedra, *as the
+/// user listed them*, have the same sign (all positive or all negative: both conventions exist).
+/// `inverted` is the size of the minority: `min(#positive, #negative)` over the non-flat
+/// tetrahedra, decided with the exact `Orientation_3` of the traits.  The PR-star octree stores
+/// every tetrahedron positively oriented and remembers which ones it swapped
+/// (`PR_star_octree_3::is_reoriented()`), so the user's sign is recovered exactly.
+struct Validity_result {
+  bool valid = true;                    ///< no inverted, flat or non-manifold element
+  std::size_t tetrahedra = 0;           ///< number of tetrahedra checked
+  std::size_t positive = 0;             ///< tetrahedra positively oriented as listed by the user
+  std::size_t negative = 0;             ///< tetrahedra negatively oriented as listed by the user
+  std::size_t inverted = 0;             ///< `min(positive, negative)`: see the orientation rule
+  std::size_t degenerate = 0;           ///< flat tetrahedra (four coplanar vertices)
+  std::size_t nonmanifold_triangles = 0; ///< triangles incident in three or more tetrahedra
+  std::size_t nonmanifold_vertices = 0; ///< vertices whose link is neither a sphere nor a disc
+  long long euler_characteristic = 0;   ///< V - E + F - T over the referenced vertices
+  std::size_t boundary_triangles = 0;   ///< triangles incident in one tetrahedron
+  /// connected components of the boundary surface, two boundary triangles being connected when
+  /// they share an edge (so two spheres touching at a vertex count twice)
+  std::size_t boundary_components = 0;
+};
+
+/// \ingroup PkgPRStarOctreeRef
+/// Checks the mesh of `tree` leaf by leaf (see `Validity_result`).  Memory beyond the octree: the
+/// local structure of the largest leaf and the boundary triangles.
+template <class Octree>
+Validity_result check_validity(const Octree& tree) {
+  using Index = typename Octree::Index;
+  Validity_result r;
+  r.tetrahedra = tree.number_of_tetrahedra();
+
+  // Euler characteristic and non-manifold triangles: simplices counted by their owning leaf.
+  const Simplex_counts counts = count_simplices(tree);
+  r.euler_characteristic = counts.euler_characteristic();
+  r.nonmanifold_triangles = counts.nonmanifold_triangles;
+  r.boundary_triangles = counts.boundary_triangles;
+
+  // Orientation of the owned tetrahedra, vertex links, boundary triangles.
+  auto orientation = tree.geom_traits().orientation_3_object();
+  Vertex_classifier<Octree> classifier;
+  std::vector<std::array<Index, 3>> boundary;
+  boundary.reserve(counts.boundary_triangles);
+  for_each_leaf(tree, VERTEX_TETRAHEDRA | TRIANGLES, [&](const Leaf_topology<Octree>& local) {
+    const auto owned = local.tetrahedra().owned();
+    for (Index t = owned.first; t < owned.second; ++t) {
+      const auto& c = tree.tetrahedron(t);
+      const CGAL::Orientation o =
+          orientation(tree.point(c[0]), tree.point(c[1]), tree.point(c[2]), tree.point(c[3]));
+      if (o == CGAL::COPLANAR)
+        ++r.degenerate;
+      else if ((o == CGAL::POSITIVE) != tree.is_reoriented(t)) // the user's sign
+        ++r.positive;
+      else
+        ++r.negative;
+    }
+    for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v)
+      r.nonmanifold_vertices += classifier.classify(local, v) == Vertex_type::NONMANIFOLD;
+    for (std::size_t f = 0; f < local.number_of_triangles(); ++f)
+      if (local.owns_triangle(f) && local.triangle_tetrahedra(f).size() == 1) boundary.push_back(local.triangle(f));
+  });
+  r.inverted = (std::min)(r.positive, r.negative);
+
+  // Boundary components: union-find on the boundary triangles through their shared edges.
+  struct Edge_record {
+    Index a, b;
+    std::uint32_t triangle;
+    bool operator<(const Edge_record& o) const { return std::tie(a, b, triangle) < std::tie(o.a, o.b, o.triangle); }
+  };
+  std::vector<Edge_record> edges;
+  edges.reserve(3 * boundary.size());
+  for (std::size_t f = 0; f < boundary.size(); ++f) {
+    const auto& t = boundary[f]; // sorted vertices
+    const std::uint32_t id = static_cast<std::uint32_t>(f);
+    edges.push_back(Edge_record{t[0], t[1], id});
+    edges.push_back(Edge_record{t[1], t[2], id});
+    edges.push_back(Edge_record{t[0], t[2], id});
+  }
+  std::sort(edges.begin(), edges.end());
+  internal::Small_union_find uf;
+  uf.reset(boundary.size());
+  std::size_t components = boundary.size();
+  for (std::size_t i = 1; i < edges.size(); ++i)
+    if (edges[i].a == edges[i - 1].a && edges[i].b == edges[i - 1].b &&
+        uf.unite(edges[i].triangle, edges[i - 1].triangle))
+      --components;
+  r.boundary_components = components;
+
+  r.valid = r.inverted == 0 && r.degenerate == 0 && r.nonmanifold_triangles == 0 && r.nonmanifold_vertices == 0;
+  return r;
+}
+
+/// \ingroup PkgPRStarOctreeRef
+/// Checks a mesh given as index arrays (see `make_input()`): builds its PR-star octree with bucket
+/// threshold `bucket_size` and calls `check_validity(const Octree&)`.
+/// \throws std::invalid_argument as the `PR_star_octree_3` constructor (index out of range,
+/// a vertex twice in a tetrahedron, non-finite coordinate)
+template <class PointRange, class TetrahedronRange>
+Validity_result check_validity(const PointRange& points, const TetrahedronRange& tetrahedra,
+                               std::size_t bucket_size = PR_star_octree_3<>::default_bucket_size) {
+  const PR_star_octree_3<> tree(make_input(points, tetrahedra), bucket_size);
+  return check_validity(tree);
+}
+
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_VALIDITY_H
