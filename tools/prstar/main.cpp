@@ -117,8 +117,10 @@ options:
   --kv N          bucket threshold of the octree (default 50)
   --json          a JSON summary on stdout
   -o OUT.vtu      the mesh with point arrays `boundary`, `distortion`, `domain_curvature`
+                  (non-manifold vertices: boundary = 2 and 0 for the undefined values)
   --csv OUT.csv   one row per input vertex, in the input order: vertex,x,y,z,boundary,distortion
-                  (boundary: 0 interior, 1 boundary, 2 non-manifold, 3 in no tetrahedron)
+                  (boundary: 0 interior, 1 boundary, 2 non-manifold, 3 in no tetrahedron;
+                  distortion: nan for non-manifold vertices)
   --force         overwrite existing output files
   --quiet         no progress on stderr
 )";
@@ -141,6 +143,12 @@ std::vector<std::size_t> parse_bucket_list(const std::string& s) {
     start = comma + 1;
   }
   return r;
+}
+
+// k_v in JSON: a number, or the string "inf".
+prstar::Json& json_kv(prstar::Json& j, std::size_t kv) {
+  if (kv == Octree::infinite_bucket_size) return j.value("inf");
+  return j.value(kv);
 }
 
 void statistics_json(prstar::Json& j, const CGAL::PR_star_octree::Statistics& s,
@@ -418,7 +426,8 @@ int cmd_boundary(int argc, char** argv) {
     j.begin_object()
         .field("vertices", mesh.points.size())
         .field("tetrahedra", mesh.tetrahedra.size())
-        .field("kv", prstar::bucket_size_string(kv))
+        .key("kv");
+    json_kv(j, kv)
         .field("boundary_vertices", b.boundary_vertices)
         .field("interior_vertices", b.interior_vertices)
         .field("nonmanifold_vertices", b.nonmanifold_vertices)
@@ -525,7 +534,14 @@ int cmd_curvature(int argc, char** argv) {
   }
   if (!out.empty()) {
     progress.phase("writing " + out);
-    write_vtu_safely(out, mesh, {boundary, distortion, domain});
+    // VTU point data must be finite (our reader refuses NaN, and so do some of ParaView's): the
+    // undefined values of non-manifold vertices are written as 0 there, flagged by boundary = 2.
+    auto finite = [](CGAL::PR_star_octree::Point_data_array a) {
+      for (double& x : a.values)
+        if (!std::isfinite(x)) x = 0;
+      return a;
+    };
+    write_vtu_safely(out, mesh, {boundary, finite(distortion), finite(domain)});
     progress.finish();
   }
   if (!csv.empty()) {
@@ -552,10 +568,8 @@ int cmd_curvature(int argc, char** argv) {
   }
   if (args.flag("--json")) {
     prstar::Json j;
-    j.begin_object()
-        .field("vertices", nv)
-        .field("tetrahedra", mesh.tetrahedra.size())
-        .field("kv", prstar::bucket_size_string(kv))
+    j.begin_object().field("vertices", nv).field("tetrahedra", mesh.tetrahedra.size()).key("kv");
+    json_kv(j, kv)
         .field("field", field_name)
         .field("interior_vertices", counts[0])
         .field("boundary_vertices", counts[1])
