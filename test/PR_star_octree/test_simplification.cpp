@@ -1,0 +1,474 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Tests of validity.h (against brute force on a hand-made invalid mesh) and of the local
+// half-edge-collapse simplification of simplification.h: validity and topology of every output,
+// boundary vertices kept on the boundary, crafted cases where only the exact predicate or only the
+// link condition rejects a collapse, and the 25% / 50% targets with k_v = infinity and finite k_v.
+//
+// argv[1]: the generated test meshes; argv[2] (optional): the shared real meshes.
+
+#include <CGAL/PR_star_octree.h>
+#include <CGAL/PR_star_octree/IO.h>
+#include <CGAL/PR_star_octree/simplification.h>
+#include <CGAL/PR_star_octree/validity.h>
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
+using Octree = CGAL::PR_star_octree_3<>;
+using Tet = std::array<std::uint32_t, 4>;
+namespace P = CGAL::PR_star_octree;
+
+int failures = 0;
+
+#define CHECK(cond)                                                                                      \
+  do {                                                                                                   \
+    if (!(cond)) {                                                                                       \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond << std::endl;                 \
+      ++failures;                                                                                        \
+    }                                                                                                    \
+  } while (0)
+
+#define CHECK_EQ(a, b)                                                                                   \
+  do {                                                                                                   \
+    const auto va_ = (a);                                                                                \
+    const auto vb_ = (b);                                                                                \
+    if (!(va_ == vb_)) {                                                                                 \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #a " == " #b " (" << va_ << " vs " \
+                << vb_ << ")" << std::endl;                                                              \
+      ++failures;                                                                                        \
+    }                                                                                                    \
+  } while (0)
+
+bool exists(const std::string& f) {
+  struct stat st;
+  return ::stat(f.c_str(), &st) == 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Brute force
+// ---------------------------------------------------------------------------------------------
+
+struct Brute {
+  std::size_t positive = 0, negative = 0, flat = 0, nonmanifold_triangles = 0;
+  long long euler = 0;
+  std::size_t boundary_components = 0;
+  std::set<std::size_t> boundary_vertices;
+};
+
+std::size_t find(std::vector<std::size_t>& p, std::size_t x) {
+  while (p[x] != x) x = p[x] = p[p[x]];
+  return x;
+}
+
+Brute brute_force(const std::vector<Point>& pts, const std::vector<Tet>& tets) {
+  Brute b;
+  std::map<std::array<std::uint32_t, 3>, int> faces;
+  std::set<std::array<std::uint32_t, 2>> edges;
+  std::set<std::uint32_t> vertices;
+  for (const Tet& c : tets) {
+    const CGAL::Orientation o = CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]);
+    b.positive += o == CGAL::POSITIVE;
+    b.negative += o == CGAL::NEGATIVE;
+    b.flat += o == CGAL::COPLANAR;
+    for (int i = 0; i < 4; ++i) {
+      vertices.insert(c[i]);
+      for (int j = i + 1; j < 4; ++j) edges.insert({std::min(c[i], c[j]), std::max(c[i], c[j])});
+      std::array<std::uint32_t, 3> f{{c[(i + 1) % 4], c[(i + 2) % 4], c[(i + 3) % 4]}};
+      std::sort(f.begin(), f.end());
+      ++faces[f];
+    }
+  }
+  b.euler = (long long)vertices.size() - (long long)edges.size() + (long long)faces.size() - (long long)tets.size();
+  std::vector<std::array<std::uint32_t, 3>> boundary;
+  for (const auto& f : faces) {
+    b.nonmanifold_triangles += f.second > 2;
+    if (f.second == 1) boundary.push_back(f.first);
+  }
+  // Components of the boundary triangles through shared edges.
+  std::vector<std::size_t> parent(boundary.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  std::map<std::array<std::uint32_t, 2>, std::size_t> first_triangle;
+  for (std::size_t i = 0; i < boundary.size(); ++i) {
+    const auto& f = boundary[i];
+    for (auto e : {std::array<std::uint32_t, 2>{{f[0], f[1]}}, std::array<std::uint32_t, 2>{{f[1], f[2]}},
+                   std::array<std::uint32_t, 2>{{f[0], f[2]}}}) {
+      auto it = first_triangle.find(e);
+      if (it == first_triangle.end())
+        first_triangle[e] = i;
+      else
+        parent[find(parent, i)] = find(parent, it->second);
+    }
+    for (auto v : f) b.boundary_vertices.insert(v);
+  }
+  for (std::size_t i = 0; i < parent.size(); ++i) b.boundary_components += find(parent, i) == i;
+  return b;
+}
+
+// ---------------------------------------------------------------------------------------------
+// validity.h against brute force
+// ---------------------------------------------------------------------------------------------
+
+void test_validity_hand_made() {
+  // A valid cube of 6 positive tetrahedra (Kuhn), then defects added one at a time.
+  std::vector<Point> pts;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) pts.emplace_back(i, j, k);
+  auto id = [](int i, int j, int k) { return std::uint32_t(i + 2 * j + 4 * k); };
+  std::vector<Tet> tets;
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const auto& p : perms) {
+    int x[3] = {0, 0, 0};
+    Tet c;
+    c[0] = id(0, 0, 0);
+    for (int s = 0; s < 3; ++s) {
+      x[p[s]] = 1;
+      c[s + 1] = id(x[0], x[1], x[2]);
+    }
+    if (CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]) == CGAL::NEGATIVE) std::swap(c[2], c[3]);
+    tets.push_back(c);
+  }
+  {
+    const auto r = P::check_validity(pts, tets);
+    CHECK(r.valid);
+    CHECK_EQ(r.euler_characteristic, 1LL);
+    CHECK_EQ(r.boundary_components, std::size_t(1));
+    CHECK_EQ(r.boundary_triangles, std::size_t(12));
+  }
+
+  // A separate tetrahedron, listed inverted.
+  const std::uint32_t a = std::uint32_t(pts.size());
+  pts.emplace_back(5, 0, 0);
+  pts.emplace_back(6, 0, 0);
+  pts.emplace_back(5, 1, 0);
+  pts.emplace_back(5, 0, 1);
+  tets.push_back(Tet{{a, a + 2, a + 1, a + 3}});
+  // A separate flat tetrahedron.
+  const std::uint32_t f = std::uint32_t(pts.size());
+  pts.emplace_back(10, 0, 0);
+  pts.emplace_back(11, 0, 0);
+  pts.emplace_back(10, 1, 0);
+  pts.emplace_back(11, 1, 0);
+  tets.push_back(Tet{{f, f + 1, f + 2, f + 3}});
+  // A triangle (0, 1, 2) of the cube's bottom face in three tetrahedra: two more below it.
+  const std::uint32_t d = std::uint32_t(pts.size());
+  pts.emplace_back(0.3, 0.3, -1);
+  pts.emplace_back(0.2, 0.4, -2);
+  tets.push_back(Tet{{id(0, 0, 0), id(1, 0, 0), id(1, 1, 0), d}});
+  tets.push_back(Tet{{id(0, 0, 0), id(1, 0, 0), id(1, 1, 0), d + 1}});
+
+  const Brute b = brute_force(pts, tets);
+  const auto r = P::check_validity(pts, tets, 3);
+  CHECK(!r.valid);
+  CHECK_EQ(r.tetrahedra, tets.size());
+  CHECK_EQ(r.positive, b.positive);
+  CHECK_EQ(r.negative, b.negative);
+  CHECK_EQ(r.degenerate, b.flat);
+  CHECK_EQ(r.degenerate, std::size_t(1));
+  CHECK_EQ(r.inverted, std::min(b.positive, b.negative));
+  CHECK(r.inverted >= 1);
+  CHECK_EQ(r.nonmanifold_triangles, b.nonmanifold_triangles);
+  CHECK(r.nonmanifold_triangles >= 1);
+  CHECK(r.nonmanifold_vertices >= 3); // at least the vertices of the triangle in three tetrahedra
+  CHECK_EQ(r.euler_characteristic, b.euler);
+  CHECK_EQ(r.boundary_components, b.boundary_components);
+  // Same answers whatever k_v.
+  const auto r1 = P::check_validity(pts, tets, Octree::infinite_bucket_size);
+  CHECK_EQ(r1.inverted, r.inverted);
+  CHECK_EQ(r1.degenerate, r.degenerate);
+  CHECK_EQ(r1.nonmanifold_triangles, r.nonmanifold_triangles);
+  CHECK_EQ(r1.nonmanifold_vertices, r.nonmanifold_vertices);
+  CHECK_EQ(r1.euler_characteristic, r.euler_characteristic);
+  CHECK_EQ(r1.boundary_components, r.boundary_components);
+
+  // All tetrahedra listed negatively: consistent (the other convention), nothing inverted.
+  std::vector<Tet> flipped(tets.begin(), tets.begin() + 6);
+  for (Tet& c : flipped) std::swap(c[0], c[1]);
+  const auto rf = P::check_validity(pts, flipped);
+  CHECK(rf.valid);
+  CHECK_EQ(rf.inverted, std::size_t(0));
+  CHECK_EQ(rf.negative, std::size_t(6));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Crafted collapses
+// ---------------------------------------------------------------------------------------------
+
+double naive_orientation(const Point& p, const Point& q, const Point& r, const Point& s) {
+  const double ax = q.x() - p.x(), ay = q.y() - p.y(), az = q.z() - p.z();
+  const double bx = r.x() - p.x(), by = r.y() - p.y(), bz = r.z() - p.z();
+  const double cx = s.x() - p.x(), cy = s.y() - p.y(), cz = s.z() - p.z();
+  return ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
+}
+
+// Two tetrahedra T1 = (v2, a, b, c) and T2 = (v1, v2, a, b) sharing the face (v2, a, b); v1 lies a
+// hair off the plane of (a, b, c), on the far side from v2, so moving v2 to v1 flips T1 by a
+// volume smaller than the rounding error of a double determinant.
+void test_exact_predicate_rejects() {
+  const Point a(0.1, 0.2, 0.3), b(1.7, 0.45, 0.35), c(0.6, 1.9, 0.5), v2(0.7, 0.5, 2.0);
+  const Point v1(0x1.e359cb0a65fe8p-1, -0x1.1f17683f86693p-1, 0x1.cc9ace08f70b8p-3);
+  const std::vector<Point> pts{v1, v2, a, b, c};
+  const std::vector<Tet> tets{Tet{{1, 2, 3, 4}}, Tet{{0, 1, 2, 3}}};
+  const Octree tree(P::make_input(pts, tets), Octree::infinite_bucket_size);
+  const auto from = tree.vertex_from_original();
+  const auto n1 = from[0], n2 = from[1];
+
+  // The moved tetrahedron as the octree stores T1 (positively oriented), v2 replaced by v1.
+  bool found = false;
+  for (const auto& t : tree.tetrahedra()) {
+    if (!std::count(t.begin(), t.end(), n2) || std::count(t.begin(), t.end(), n1)) continue;
+    found = true;
+    CHECK(CGAL::orientation(tree.point(t[0]), tree.point(t[1]), tree.point(t[2]), tree.point(t[3])) ==
+          CGAL::POSITIVE);
+    std::array<Point, 4> moved;
+    for (int k = 0; k < 4; ++k) moved[k] = tree.point(t[k] == n2 ? n1 : t[k]);
+    // A floating-point volume would accept the collapse ...
+    CHECK(naive_orientation(moved[0], moved[1], moved[2], moved[3]) > 0);
+    // ... the exact predicate sees the flip.
+    CHECK(CGAL::orientation(moved[0], moved[1], moved[2], moved[3]) != CGAL::POSITIVE);
+  }
+  CHECK(found);
+  const P::Collapse_check check = P::check_half_edge_collapse(tree, n1, n2);
+  CHECK(check.edge_exists);
+  CHECK(check.boundary);
+  CHECK(check.link);
+  CHECK(!check.geometry);
+  CHECK(!check.allowed());
+}
+
+// A single tetrahedron: every condition but the link one holds for any edge (both ends on the
+// boundary, a boundary edge, nothing left to flip), but collapsing it would flatten the ball:
+// Lk(v1) ∩ Lk(v2) holds the coned triangle (omega, a, b), which is not in Lk(e).
+void test_link_condition_rejects_single_tetrahedron() {
+  const std::vector<Point> pts{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
+  const std::vector<Tet> tets{Tet{{0, 1, 2, 3}}};
+  const Octree tree(P::make_input(pts, tets), Octree::infinite_bucket_size);
+  const P::Collapse_check check = P::check_half_edge_collapse(tree, 0, 1);
+  CHECK(check.edge_exists);
+  CHECK(check.boundary);
+  CHECK(check.geometry);
+  CHECK(!check.link);
+  P::Simplification_options o;
+  o.max_edge_length = 10;
+  const auto res = P::simplify(P::make_input(pts, tets), o);
+  CHECK_EQ(res.mesh.tetrahedra.size(), std::size_t(1));
+  CHECK_EQ(res.statistics.blocked.link, std::size_t(6));
+}
+
+// A solid torus with a triangular cross-section, one prism (three tetrahedra) per sector and
+// three sectors: all vertices on the boundary.  The edge e = (v1, v2) along the ring between the
+// sections 0 and 1 is a boundary edge; the same corner w of section 2 is joined to both v1 and v2
+// by edges outside St(e) ((v1, v2, w) is not a triangle: it would span the hole): collapsing e
+// would pinch the loop v1-v2-w around the hole into one edge.  The ring is wide and the collapse
+// flips nothing: only the link condition rejects it.
+void test_link_condition_rejects_ring() {
+  // Cross-section triangle i (i = 0..2) at angle 2 pi i / 3, vertices 3 i + {0, 1, 2}.
+  std::vector<Point> pts;
+  const double R = 10;
+  for (int i = 0; i < 3; ++i) {
+    const double t = 2 * CGAL_PI * i / 3, ct = std::cos(t), st = std::sin(t);
+    // inner, outer, top corners of the section in the (radial, z) plane
+    const double rz[3][2] = {{R - 1, 0}, {R + 1, 0}, {R, 1.5}};
+    for (const auto& q : rz) pts.emplace_back(q[0] * ct, q[0] * st, q[1]);
+  }
+  std::vector<Tet> tets;
+  for (int i = 0; i < 3; ++i) {
+    const std::uint32_t a0 = 3 * i, a1 = 3 * i + 1, a2 = 3 * i + 2;
+    const std::uint32_t b0 = 3 * ((i + 1) % 3), b1 = b0 + 1, b2 = b0 + 2;
+    // the prism (a0 a1 a2 | b0 b1 b2) in three tetrahedra, staircase split with the lowest index first
+    const Tet split[3] = {Tet{{a0, a1, a2, b2}}, Tet{{a0, a1, b1, b2}}, Tet{{a0, b0, b1, b2}}};
+    for (Tet c : split) {
+      if (CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]) == CGAL::NEGATIVE) std::swap(c[2], c[3]);
+      tets.push_back(c);
+    }
+  }
+  const Brute b = brute_force(pts, tets);
+  CHECK_EQ(b.flat, std::size_t(0));
+  CHECK_EQ(b.nonmanifold_triangles, std::size_t(0));
+  CHECK_EQ(b.euler, 0LL); // a solid torus
+  const auto valid = P::check_validity(pts, tets);
+  CHECK(valid.valid);
+  CHECK_EQ(valid.euler_characteristic, 0LL);
+
+  const Octree tree(P::make_input(pts, tets), Octree::infinite_bucket_size);
+  const auto from = tree.vertex_from_original();
+  // The ring edges between two sections at the same corner, e.g. (0, 3): the corner of the third
+  // section (6) is joined to both ends, but (0, 3, 6) is not a triangle.  The link condition
+  // rejects every such collapse; in some of them (the moving vertex slides along the ring without
+  // crossing a face) nothing else does.
+  std::size_t link_only = 0;
+  for (std::uint32_t s0 = 0; s0 < 3; ++s0)
+    for (std::uint32_t corner = 0; corner < 3; ++corner)
+      for (int dir = 0; dir < 2; ++dir) {
+        const std::uint32_t p0 = 3 * s0 + corner, p1 = 3 * ((s0 + 1) % 3) + corner;
+        const P::Collapse_check ch = P::check_half_edge_collapse(tree, from[dir ? p1 : p0], from[dir ? p0 : p1]);
+        CHECK(ch.edge_exists);
+        CHECK(ch.boundary);
+        CHECK(!ch.link);
+        link_only += ch.geometry;
+      }
+  std::cout << "ring: " << link_only << " of 18 ring-edge collapses rejected by the link condition alone" << std::endl;
+  CHECK(link_only >= 1);
+  // No collapse at all can keep a one-sector-thick ring of three sectors a solid torus.
+  std::set<std::array<std::uint32_t, 2>> edges;
+  for (const Tet& c : tets)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) edges.insert({std::min(c[i], c[j]), std::max(c[i], c[j])});
+  for (const auto& e : edges)
+    for (int dir = 0; dir < 2; ++dir)
+      CHECK(!P::check_half_edge_collapse(tree, from[e[dir]], from[e[1 - dir]]).allowed());
+  P::Simplification_options o;
+  o.max_edge_length = 100;
+  const auto res = P::simplify(P::make_input(pts, tets), o);
+  CHECK_EQ(res.mesh.tetrahedra.size(), tets.size());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Simplification of real meshes
+// ---------------------------------------------------------------------------------------------
+
+// Runs one simplification and checks everything that must hold of its output.
+P::Simplification_statistics check_run(const Mesh& mesh, const Brute& in, const P::Validity_result& vin,
+                                       const P::Simplification_options& o, const std::string& name) {
+  const auto res = P::simplify(mesh, o);
+  const auto& s = res.statistics;
+  std::cout << "  " << name << " target " << o.target_fraction << " k_v "
+            << (o.bucket_size == Octree::infinite_bucket_size ? std::string("inf") : std::to_string(o.bucket_size))
+            << ": removed " << s.removed_tetrahedra << " / " << s.input_tetrahedra << " in " << s.rounds
+            << " rounds, max queue " << s.max_queue_size << ", blocked " << s.blocked.different_leaves << " leaves, "
+            << s.blocked.boundary << " boundary, " << s.blocked.flip << " flip, " << s.blocked.link << " link, "
+            << s.seconds << " s" << std::endl;
+  CHECK_EQ(s.input_tetrahedra, mesh.tetrahedra.size());
+  CHECK_EQ(s.output_tetrahedra, res.mesh.tetrahedra.size());
+  CHECK_EQ(s.input_tetrahedra - s.output_tetrahedra, s.removed_tetrahedra);
+  CHECK_EQ(res.input_vertex.size(), res.mesh.points.size());
+
+  // Validity and topology.
+  const auto v = P::check_validity(res.mesh.points, res.mesh.tetrahedra);
+  CHECK_EQ(v.inverted, std::size_t(0));
+  CHECK_EQ(v.negative, std::size_t(0)); // the output is positively oriented
+  CHECK_EQ(v.degenerate, std::size_t(0));
+  CHECK_EQ(v.nonmanifold_triangles, vin.nonmanifold_triangles);
+  CHECK(v.nonmanifold_vertices <= vin.nonmanifold_vertices);
+  if (vin.valid) CHECK(v.valid);
+  CHECK_EQ(v.euler_characteristic, vin.euler_characteristic);
+  CHECK_EQ(v.boundary_components, vin.boundary_components);
+
+  // Vertices never move; boundary vertices of the output were boundary vertices of the input.
+  const Brute out = brute_force(res.mesh.points, res.mesh.tetrahedra);
+  CHECK_EQ(out.euler, in.euler);
+  CHECK_EQ(out.boundary_components, in.boundary_components);
+  std::size_t moved = 0, off_boundary = 0;
+  for (std::size_t i = 0; i < res.mesh.points.size(); ++i) {
+    const std::size_t o_i = res.input_vertex[i];
+    moved += !(res.mesh.points[i] == mesh.points[o_i]);
+    if (out.boundary_vertices.count(static_cast<std::uint32_t>(i)) && !in.boundary_vertices.count(o_i)) ++off_boundary;
+  }
+  CHECK_EQ(moved, std::size_t(0));
+  CHECK_EQ(off_boundary, std::size_t(0));
+  // The scalar field follows its vertex.
+  CHECK_EQ(res.mesh.point_data.size(), mesh.point_data.size());
+  for (std::size_t k = 0; k < std::min(res.mesh.point_data.size(), mesh.point_data.size()); ++k)
+    for (std::size_t i = 0; i < res.mesh.points.size(); ++i)
+      if (res.mesh.point_data[k].values[i] != mesh.point_data[k].values[res.input_vertex[i]]) {
+        ++failures;
+        std::cerr << name << ": point data " << k << " not carried at vertex " << i << std::endl;
+        break;
+      }
+  return s;
+}
+
+void test_mesh(const std::string& file, bool targets) {
+  Mesh mesh;
+  P::IO::read_tetrahedral_mesh(file, mesh);
+  // A scalar field to carry along (keep the mesh's own when it has one).
+  if (mesh.point_data.empty()) {
+    P::Point_data_array a{"x_plus_2y", {}};
+    for (const Point& p : mesh.points) a.values.push_back(p.x() + 2 * p.y());
+    mesh.point_data.push_back(a);
+  }
+  std::cout << file << ": " << mesh.points.size() << " vertices, " << mesh.tetrahedra.size() << " tetrahedra"
+            << std::endl;
+  std::vector<Tet> tets(mesh.tetrahedra.begin(), mesh.tetrahedra.end());
+  const Brute in = brute_force(mesh.points, tets);
+  const auto vin = P::check_validity(mesh.points, mesh.tetrahedra);
+  CHECK_EQ(vin.euler_characteristic, in.euler);
+  CHECK_EQ(vin.boundary_components, in.boundary_components);
+  CHECK_EQ(vin.nonmanifold_triangles, in.nonmanifold_triangles);
+  CHECK_EQ(vin.inverted, std::min(in.positive, in.negative));
+  CHECK_EQ(vin.degenerate, in.flat);
+
+  const std::size_t kvs[] = {20, Octree::infinite_bucket_size};
+  const double fractions_all[] = {0.25, 0.5};
+  const double fractions_one[] = {0.5};
+  const double* fb = targets ? fractions_all : fractions_one;
+  const std::size_t nf = targets ? 2 : 1;
+  for (std::size_t i = 0; i < nf; ++i) {
+    for (std::size_t kv : kvs) {
+      P::Simplification_options o;
+      o.target_fraction = fb[i];
+      o.bucket_size = kv;
+      const auto s = check_run(mesh, in, vin, o, file);
+      if (targets && vin.valid) {
+        // Both the global and the local algorithm reach the target on a mesh of >= 10K tetrahedra.
+        const std::size_t target = static_cast<std::size_t>(std::ceil(fb[i] * double(mesh.tetrahedra.size())));
+        CHECK(s.removed_tetrahedra >= target);
+        if (kv == Octree::infinite_bucket_size) CHECK_EQ(s.blocked.different_leaves, std::size_t(0));
+      }
+    }
+  }
+  // A length threshold only: every remaining edge within the leaves is longer or blocked.
+  P::Simplification_options o;
+  o.max_edge_length = 0.0; // set below from the data
+  double sum = 0;
+  std::size_t n = 0;
+  for (const auto& c : mesh.tetrahedra) {
+    sum += std::sqrt(CGAL::squared_distance(mesh.points[c[0]], mesh.points[c[1]]));
+    ++n;
+  }
+  o.max_edge_length = 0.8 * sum / double(n);
+  o.bucket_size = 50;
+  check_run(mesh, in, vin, o, file + " (length only)");
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  test_validity_hand_made();
+  test_exact_predicate_rejects();
+  test_link_condition_rejects_single_tetrahedron();
+  test_link_condition_rejects_ring();
+
+  if (argc > 1) {
+    const std::string dir = argv[1];
+    for (const char* name : {"sphere.mesh", "torus.mesh"}) test_mesh(dir + "/" + name, true);
+    for (const char* name : {"cube.mesh", "sphere_tetgen.mesh", "cube_tetgen.vtu"}) test_mesh(dir + "/" + name, false);
+  }
+  if (argc > 2) {
+    const std::string dir = argv[2];
+    for (const char* name : {"armadillo_sofa.vtu", "bunny_sofa.vtu", "skull_14k.off", "spx_zsweep.off",
+                             "part1.1.ele", "t13_data.1.ele"})
+      if (exists(dir + "/" + name)) test_mesh(dir + "/" + name, false);
+  }
+  if (failures) {
+    std::cerr << failures << " check(s) failed" << std::endl;
+    return EXIT_FAILURE;
+  }
+  std::cout << "all simplification tests passed" << std::endl;
+  return EXIT_SUCCESS;
+}
