@@ -11,6 +11,8 @@
 #include <CGAL/PR_star_octree/Leaf_topology.h>
 #include <CGAL/PR_star_octree/boundary.h>
 #include <CGAL/PR_star_octree/distortion.h>
+#include <CGAL/PR_star_octree/simplification.h>
+#include <CGAL/PR_star_octree/validity.h>
 
 #include <sys/stat.h>
 
@@ -41,6 +43,8 @@ commands:
   stats      storage statistics of the PR-star octree of a mesh (paper Table 1) and simplex counts
   boundary   boundary and non-manifold vertices, boundary triangles and tetrahedra (paper Section 7)
   curvature  discrete distortion of a scalar field at every vertex (paper Section 8)
+  validate   orientation, flat and non-manifold elements, Euler characteristic, boundary components
+  simplify   local half-edge-collapse simplification (paper Section 9)
   generate   make a tetrahedral mesh with CGAL Mesh_3 or TetGen
 
 Run 'prstar COMMAND --help' for the options of a command.
@@ -123,6 +127,40 @@ options:
                   distortion: nan for non-manifold vertices)
   --force         overwrite existing output files
   --quiet         no progress on stderr
+)";
+
+const char* const validate_usage = R"(usage: prstar validate MESH [--kv N] [--json] [--quiet]
+
+Checks MESH leaf by leaf: the orientation of every tetrahedron with an exact predicate (all must
+have the same sign as listed; "inverted" counts the minority sign), flat tetrahedra, triangles in
+three or more tetrahedra, non-manifold vertices, the Euler characteristic and the number of
+boundary components (boundary triangles connected through edges).  Exit code 0 if the mesh is
+valid, 1 if not.
+
+options:
+  --kv N          bucket threshold of the octree (default 50)
+  --json          one JSON object: valid, inverted, degenerate, nonmanifold_triangles,
+                  nonmanifold_vertices, euler_characteristic, boundary_components, ...
+  --quiet         no progress on stderr
+)";
+
+const char* const simplify_usage =
+    R"(usage: prstar simplify MESH (--target F | --max-length L) [--kv N|inf] -o OUT [--force] [--json] [--quiet]
+
+Simplifies MESH by half-edge collapses leaf by leaf (paper Section 9): each leaf collapses its
+short edges, shortest first, under the boundary, geometric (exact orientation) and link
+conditions; then the mesh is compacted and the octree rebuilt, until the target is met or a round
+removes nothing.  Vertices never move; point data (the scalar field) is kept.
+
+options:
+  --target F        stop once this fraction of the tetrahedra is removed (0 < F < 1)
+  --max-length L    collapse only edges shorter than L (with --target: both)
+  --kv N|inf        bucket threshold k_v (default 50); inf is the global algorithm
+  -o, --output OUT  the simplified mesh (.mesh, .vtu, .off/.ts)
+  --force           overwrite OUT if it exists
+  --json            one JSON object: input_tetrahedra, output_tetrahedra, removed_tetrahedra,
+                    rounds, max_queue, seconds, blocked {different_leaves, boundary, flip, link}
+  --quiet           no progress on stderr, no table
 )";
 
 bool wants_help(int argc, char** argv) {
@@ -600,6 +638,127 @@ int cmd_curvature(int argc, char** argv) {
   return 0;
 }
 
+int cmd_validate(int argc, char** argv) {
+  Arguments args(argc, argv, 2, {"--json", "--quiet"}, {"--kv"});
+  if (args.positional().size() != 1)
+    throw Usage_error(args.positional().empty() ? "missing MESH" : "expected one MESH, got several");
+  const std::string input = args.positional()[0];
+  const std::size_t kv = parse_single_kv(args);
+  prstar::Progress progress(args.flag("--quiet") || args.flag("--json"));
+  const Mesh mesh = read_mesh(input, progress);
+  progress.phase("checking the mesh leaf by leaf");
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = CGAL::PR_star_octree::check_validity(mesh.points, mesh.tetrahedra, kv);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.finish();
+  if (args.flag("--json")) {
+    prstar::Json j;
+    j.begin_object()
+        .field("valid", r.valid)
+        .field("tetrahedra", r.tetrahedra)
+        .field("inverted", r.inverted)
+        .field("degenerate", r.degenerate)
+        .field("nonmanifold_triangles", r.nonmanifold_triangles)
+        .field("nonmanifold_vertices", r.nonmanifold_vertices)
+        .field("euler_characteristic", r.euler_characteristic)
+        .field("boundary_triangles", r.boundary_triangles)
+        .field("boundary_components", r.boundary_components)
+        .field("seconds", seconds)
+        .end_object();
+    std::cout << j.str() << '\n';
+  } else {
+    prstar::Table t({"check", "count"});
+    t.add({"tetrahedra", std::to_string(r.tetrahedra)});
+    t.add({"  positive as listed", std::to_string(r.positive)});
+    t.add({"  negative as listed", std::to_string(r.negative)});
+    t.add({"  inverted (minority sign)", std::to_string(r.inverted)});
+    t.add({"  flat (degenerate)", std::to_string(r.degenerate)});
+    t.add({"triangles in 3+ tetrahedra", std::to_string(r.nonmanifold_triangles)});
+    t.add({"non-manifold vertices", std::to_string(r.nonmanifold_vertices)});
+    t.add({"Euler characteristic", std::to_string(r.euler_characteristic)});
+    t.add({"boundary triangles", std::to_string(r.boundary_triangles)});
+    t.add({"boundary components", std::to_string(r.boundary_components)});
+    std::cout << input << ": " << (r.valid ? "valid" : "INVALID") << " (" << prstar::fixed(seconds, 3) << " s)\n"
+              << t.str();
+  }
+  return r.valid ? 0 : 1;
+}
+
+int cmd_simplify(int argc, char** argv) {
+  Arguments args(argc, argv, 2, {"--json", "--quiet", "--force"},
+                 {"--target", "--max-length", "--kv", "-o", "--output"});
+  if (args.positional().size() != 1)
+    throw Usage_error(args.positional().empty() ? "missing MESH" : "expected one MESH, got several");
+  const std::string input = args.positional()[0];
+  CGAL::PR_star_octree::Simplification_options opt;
+  if (!args.has("--target") && !args.has("--max-length")) throw Usage_error("give --target or --max-length");
+  opt.target_fraction = args.get_double("--target", 0);
+  if (args.has("--target") && !(opt.target_fraction > 0 && opt.target_fraction < 1))
+    throw Usage_error("--target must be a fraction of the tetrahedra in (0, 1), e.g. 0.5");
+  opt.max_edge_length = args.get_double("--max-length", std::numeric_limits<double>::infinity());
+  if (!(opt.max_edge_length > 0)) throw Usage_error("--max-length must be positive");
+  opt.bucket_size = parse_single_kv(args);
+  if (args.has("-o") && args.has("--output")) throw Usage_error("give -o or --output once");
+  const std::string out = args.has("-o") ? args.get("-o") : args.get("--output");
+  if (out.empty()) throw Usage_error("missing -o OUT");
+  if (!CGAL::PR_star_octree::IO::is_writable_extension(out))
+    throw Usage_error(out + ": cannot write this format (writable: " +
+                      CGAL::PR_star_octree::IO::writable_extensions() + ")");
+  if (out == input) throw Usage_error("the output " + out + " would overwrite the input");
+  if (file_exists(out) && !args.flag("--force"))
+    throw std::runtime_error(out + ": the file exists (use --force to overwrite it)");
+  prstar::Progress progress(args.flag("--quiet") || args.flag("--json"));
+  const Mesh mesh = read_mesh(input, progress);
+  progress.phase("simplifying (k_v = " + prstar::bucket_size_string(opt.bucket_size) + ")");
+  const auto res = CGAL::PR_star_octree::simplify(mesh, opt);
+  progress.finish();
+  progress.phase("writing " + out);
+  write_mesh_safely(out, res.mesh);
+  progress.finish();
+  const auto& s = res.statistics;
+  if (args.flag("--json")) {
+    prstar::Json j;
+    j.begin_object()
+        .field("input_tetrahedra", s.input_tetrahedra)
+        .field("output_tetrahedra", s.output_tetrahedra)
+        .field("removed_tetrahedra", s.removed_tetrahedra)
+        .field("input_vertices", s.input_vertices)
+        .field("output_vertices", s.output_vertices)
+        .key("kv");
+    json_kv(j, opt.bucket_size)
+        .field("rounds", s.rounds)
+        .field("max_queue", s.max_queue_size)
+        .field("seconds", s.seconds);
+    j.key("blocked").begin_object();
+    j.field("different_leaves", s.blocked.different_leaves)
+        .field("boundary", s.blocked.boundary)
+        .field("flip", s.blocked.flip)
+        .field("link", s.blocked.link);
+    j.end_object();
+    j.field("output", out).end_object();
+    std::cout << j.str() << '\n';
+    return 0;
+  }
+  if (args.flag("--quiet")) return 0;
+  prstar::Table t({"", "count"});
+  t.add({"input tetrahedra", std::to_string(s.input_tetrahedra)});
+  t.add({"output tetrahedra", std::to_string(s.output_tetrahedra)});
+  t.add({"removed", std::to_string(s.removed_tetrahedra) + " (" +
+                        prstar::fixed(s.input_tetrahedra ? 100. * double(s.removed_tetrahedra) / double(s.input_tetrahedra) : 0., 1) +
+                        "%)"});
+  t.add({"vertices", std::to_string(s.input_vertices) + " -> " + std::to_string(s.output_vertices)});
+  t.add({"rounds", std::to_string(s.rounds)});
+  t.add({"max queue size", std::to_string(s.max_queue_size)});
+  t.add({"blocked: ends in different leaves", std::to_string(s.blocked.different_leaves)});
+  t.add({"blocked: boundary", std::to_string(s.blocked.boundary)});
+  t.add({"blocked: flip (exact orientation)", std::to_string(s.blocked.flip)});
+  t.add({"blocked: link condition", std::to_string(s.blocked.link)});
+  std::cout << input << " (k_v = " << prstar::bucket_size_string(opt.bucket_size) << ", "
+            << prstar::fixed(s.seconds, 3) << " s)\n"
+            << t.str() << "wrote " << out << '\n';
+  return 0;
+}
+
 int cmd_demo(int argc, char** argv) {
   Arguments args(argc, argv, 2, {"--json", "--quiet"}, {"--cell-size", "--kv"});
   if (!args.positional().empty()) throw Usage_error("unexpected argument '" + args.positional()[0] + "'");
@@ -641,6 +800,8 @@ int main(int argc, char** argv) {
                               {"generate", generate_usage, cmd_generate},
                               {"boundary", boundary_usage, cmd_boundary},
                               {"curvature", curvature_usage, cmd_curvature},
+                              {"validate", validate_usage, cmd_validate},
+                              {"simplify", simplify_usage, cmd_simplify},
                               {"demo", demo_usage, cmd_demo}};
   for (const Command& c : commands) {
     if (command != c.name) continue;
