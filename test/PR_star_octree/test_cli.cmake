@@ -158,3 +158,31 @@ run(0 "distortion of 'distortion'" "" curvature ${WORK}/sphere_curv.vtu --field 
 
 # demo (the README's main job) on a coarse ball.
 run(0 "built-in unit ball.*inf" "" demo --cell-size 0.2 --quiet)
+
+# validate: exit 0 on a valid mesh (table, JSON keys), 1 on an invalid one (one tetrahedron inverted).
+run(0 "valid.*boundary components +1" "" validate ${DATA}/sphere.mesh --quiet)
+run(0 "\"valid\": true.*\"inverted\": 0.*\"euler_characteristic\": 0.*\"boundary_components\": 1" "" validate ${DATA}/torus.mesh --json)
+file(WRITE ${WORK}/inverted.off "OFF\n5 2\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n0 1 2 3\n1 3 2 4\n")
+run(nonzero "INVALID" "" validate ${WORK}/inverted.off)
+run(nonzero "\"valid\": false.*\"inverted\": 1" "" validate ${WORK}/inverted.off --json)
+run(nonzero "" "missing MESH" validate)
+
+# simplify: target reached, output valid with the same topology, point data kept, no overwrite.
+run(0 "\"removed_tetrahedra\": ([0-9]+).*\"blocked\": {\"different_leaves\"" "" simplify ${DATA}/torus.mesh --target 0.5 --kv 20 -o ${WORK}/torus_half.vtu --json)
+string(JSON in GET "${last_out}" input_tetrahedra)
+string(JSON removed GET "${last_out}" removed_tetrahedra)
+math(EXPR twice "2 * ${removed}")
+if(twice LESS in)
+  message(SEND_ERROR "simplify --target 0.5: removed ${removed} of ${in}")
+endif()
+run(0 "\"valid\": true.*\"euler_characteristic\": 0.*\"boundary_components\": 1" "" validate ${WORK}/torus_half.vtu --json)
+run(0 "removed.*wrote" "" simplify ${DATA}/sphere.mesh --target 0.25 --kv inf -o ${WORK}/sphere_q.mesh --force)
+run(0 "" "" simplify ${DATA}/cube.mesh --max-length 0.05 -o ${WORK}/cube_s.off --quiet)
+run(nonzero "" "exists.*--force" simplify ${DATA}/torus.mesh --target 0.5 -o ${WORK}/torus_half.vtu)
+run(nonzero "" "give --target or --max-length" simplify ${DATA}/torus.mesh -o ${WORK}/x.mesh)
+run(nonzero "" "--target must be" simplify ${DATA}/torus.mesh --target 1.5 -o ${WORK}/x.mesh)
+run(nonzero "" "missing -o" simplify ${DATA}/torus.mesh --target 0.5)
+run(nonzero "" "cannot write this format" simplify ${DATA}/torus.mesh --target 0.5 -o ${WORK}/x.txt)
+if(EXISTS ${WORK}/x.mesh OR EXISTS ${WORK}/x.txt)
+  message(SEND_ERROR "a failed simplify left an output file behind")
+endif()
