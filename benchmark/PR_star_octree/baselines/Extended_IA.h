@@ -82,22 +82,32 @@ public:
   Index vertex_tetrahedron(Index v) const { return vt_star_[v]; }
 
   /// VT: the star of `v`, by walking from VT*(v) across the faces incident in `v`.  `out` is
-  /// cleared and filled (visit order); `stack` is scratch space reused between calls.
+  /// cleared and filled (visit order); `stack` is scratch space reused between calls.  Visited
+  /// tetrahedra are recognised by a per-tetrahedron stamp (query scratch, 4 bytes per
+  /// tetrahedron, allocated on the first query and not counted in `overhead_bytes()`).
   void vertex_tetrahedra(Index v, std::vector<Index>& out, std::vector<Index>& stack) const {
     out.clear();
     stack.clear();
     const Index start = vt_star_[v];
     if (start == no_neighbor) return;
+    if (stamp_.size() != tt_.size()) stamp_.assign(tt_.size(), 0);
+    if (++generation_ == 0) { // wrapped around: reset the stamps
+      std::fill(stamp_.begin(), stamp_.end(), 0);
+      generation_ = 1;
+    }
+    stamp_[start] = generation_;
     out.push_back(start);
     stack.push_back(start);
     while (!stack.empty()) {
       const Index t = stack.back();
       stack.pop_back();
       const Tetrahedron& c = (*tets_)[t];
+      const std::array<Index, 4>& n = tt_[t];
       for (int k = 0; k < 4; ++k) {
         if (c[k] == v) continue; // the face opposite v does not contain v
-        const Index u = tt_[t][k];
-        if (u == no_neighbor || std::find(out.begin(), out.end(), u) != out.end()) continue;
+        const Index u = n[k];
+        if (u == no_neighbor || stamp_[u] == generation_) continue;
+        stamp_[u] = generation_;
         out.push_back(u);
         stack.push_back(u);
       }
@@ -124,6 +134,8 @@ private:
   const std::vector<Tetrahedron>* tets_;
   std::vector<std::array<Index, 4>> tt_;
   std::vector<Index> vt_star_;
+  mutable std::vector<std::uint32_t> stamp_;
+  mutable std::uint32_t generation_ = 0;
 };
 
 } // namespace prstar_baselines

@@ -90,8 +90,6 @@ public:
   /// @{
   /// the tetrahedra incident in `v` (a vertex of the leaf), in increasing index order
   Range<Index> vertex_tetrahedra(Index v) const { return csr(vt_offsets_, vt_, v - vb_); }
-  /// the same, as local tetrahedron positions
-  Range<Index> vertex_local_tetrahedra(Index v) const { return csr(vt_offsets_, vt_local_, v - vb_); }
   /// @}
 
   /// \name Tetrahedron-tetrahedra (TT)
@@ -161,10 +159,9 @@ public:
     auto b = [](const auto& v) {
       return v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type);
     };
-    return b(vt_offsets_) + b(vt_) + b(vt_local_) + b(tt_) + b(vv_offsets_) + b(vv_) + b(edges_) +
-           b(edge_flags_) + b(et_offsets_) + b(et_) + b(el_offsets_) + b(el_) + b(vedge_offsets_) +
-           b(vedge_) + b(triangles_) + b(ft_offsets_) + b(ft_) + b(face_records_) + b(edge_records_) +
-           b(scratch_) + b(visited_);
+    return b(vt_offsets_) + b(vt_) + b(tt_) + b(vv_offsets_) + b(vv_) + b(edges_) + b(edge_flags_) +
+           b(et_offsets_) + b(et_) + b(el_offsets_) + b(el_) + b(vedge_offsets_) + b(vedge_) + b(triangles_) +
+           b(ft_offsets_) + b(ft_) + b(face_records_) + b(edge_records_) + b(scratch_) + b(visited_);
   }
 
 private:
@@ -200,7 +197,7 @@ private:
   unsigned relations_ = 0;
   Index vb_ = 0, ve_ = 0;
 
-  std::vector<Index> vt_offsets_, vt_, vt_local_;
+  std::vector<Index> vt_offsets_, vt_;
   std::vector<std::array<Index, 4>> tt_;
   std::vector<Index> vv_offsets_, vv_;
   std::vector<Edge> edges_;
@@ -237,23 +234,37 @@ template <class Octree>
 void Leaf_topology<Octree>::build_vt() {
   const std::size_t nv = ve_ - vb_;
   const auto tets = tetrahedra();
+  const auto shared = tets.shared();
+  const auto owned = tets.owned();
+  const Tetrahedron* T = tree_->tetrahedra().data();
+  const Index vb = vb_;
+  // Count, then fill (CSR).  Shared tetrahedra come from the leaf's list, owned ones are the
+  // contiguous range `owned` of T: two tight loops, no per-element dispatch.
   vt_offsets_.assign(nv + 1, 0);
-  for (Index t : tets)
-    for (Index v : tree_->tetrahedron(t))
-      if (v - vb_ < nv) ++vt_offsets_[v - vb_ + 1]; // unsigned wrap-around rejects v < vb_
+  Index* count = vt_offsets_.data() + 1;
+  auto add = [&](Index t) {
+    const Tetrahedron& c = T[t];
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t d = static_cast<Index>(c[k] - vb); // wraps around for c[k] < vb
+      if (d < nv) ++count[d];
+    }
+  };
+  for (Index t : shared) add(t);
+  for (Index t = owned.first; t < owned.second; ++t) add(t);
   for (std::size_t i = 0; i < nv; ++i) vt_offsets_[i + 1] += vt_offsets_[i];
   vt_.resize(vt_offsets_[nv]);
-  vt_local_.resize(vt_offsets_[nv]);
   scratch_.assign(vt_offsets_.begin(), vt_offsets_.end() - 1);
-  for (std::size_t i = 0; i < tets.size(); ++i) {
-    const Index t = tets[i];
-    for (Index v : tree_->tetrahedron(t))
-      if (v - vb_ < nv) {
-        const Index p = scratch_[v - vb_]++;
-        vt_[p] = t;
-        vt_local_[p] = static_cast<Index>(i);
-      }
-  }
+  Index* pos = scratch_.data();
+  Index* out = vt_.data();
+  auto put = [&](Index t) {
+    const Tetrahedron& c = T[t];
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t d = static_cast<Index>(c[k] - vb);
+      if (d < nv) out[pos[d]++] = t;
+    }
+  };
+  for (Index t : shared) put(t);
+  for (Index t = owned.first; t < owned.second; ++t) put(t);
 }
 
 // Algorithm 2 and the triangles: the faces with a vertex in the leaf, sorted and paired.

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -78,93 +79,115 @@ public:
   Vertex_type classify(const Leaf_topology<Octree>& local, Index v) {
     const auto star = local.vertex_tetrahedra(v);
     if (star.empty()) return Vertex_type::UNREFERENCED;
-    const Octree& tree = local.octree();
-    // Link edges: for each tetrahedron (v, a, b, c), the link triangle (a, b, c) has the three
-    // edges (a,b), (b,c), (a,c).
-    edges_.clear();
+    const auto* T = local.octree().tetrahedra().data();
+    // The link: vertices (local ids by a small hash map) and edges with their multiplicities.
+    // For each tetrahedron (v, a, b, c), the link triangle (a, b, c) has the edges (a,b), (b,c), (a,c).
+    vertex_ids_.reset(3 * star.size());
+    edge_ids_.reset(3 * star.size());
+    link_edges_.clear();
+    std::uint32_t nv = 0;
     for (Index t : star) {
-      const auto& c = tree.tetrahedron(t);
-      Index o[3];
+      const auto& c = T[t];
+      std::uint64_t o[3];
       int n = 0;
-      for (Index w : c)
-        if (w != v) o[n++] = w;
-      std::sort(o, o + 3);
-      edges_.push_back({o[0], o[1]});
-      edges_.push_back({o[1], o[2]});
-      edges_.push_back({o[0], o[2]});
+      for (int k = 0; k < 4; ++k)
+        if (c[k] != v) o[n++] = c[k];
+      std::uint32_t id[3];
+      for (int i = 0; i < 3; ++i) {
+        std::uint32_t& slot = vertex_ids_.find_or_insert(o[i], nv);
+        id[i] = slot;
+      }
+      const int pairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
+      for (const auto& p : pairs) {
+        const std::uint64_t a = o[p[0]], b = o[p[1]];
+        const std::uint64_t key = a < b ? (a << 32 | b) : (b << 32 | a);
+        std::uint32_t next = static_cast<std::uint32_t>(link_edges_.size());
+        const std::uint32_t e = edge_ids_.find_or_insert(key, next);
+        if (e == link_edges_.size()) link_edges_.push_back({id[p[0]], id[p[1]], 0});
+        if (++link_edges_[e].count > 2) return Vertex_type::NONMANIFOLD; // a triangle in 3+ tetrahedra
+      }
     }
-    std::sort(edges_.begin(), edges_.end());
-    // Count distinct link edges and their multiplicities.
-    std::size_t distinct = 0, boundary_edges = 0;
-    bool overfull = false;
-    for (std::size_t i = 0; i < edges_.size();) {
-      std::size_t j = i + 1;
-      while (j < edges_.size() && edges_[j] == edges_[i]) ++j;
-      ++distinct;
-      if (j - i == 1) ++boundary_edges;
-      if (j - i > 2) overfull = true;
-      i = j;
-    }
+    std::size_t boundary_edges = 0;
+    for (const Link_edge& e : link_edges_) boundary_edges += (e.count == 1);
+    const std::size_t distinct = link_edges_.size();
     const bool euler_boundary = 2 * distinct != 3 * star.size(); // the paper's test
-    if (overfull) return Vertex_type::NONMANIFOLD;
-    if (!is_disc_or_sphere(boundary_edges, distinct, star.size())) return Vertex_type::NONMANIFOLD;
+    if (!is_disc_or_sphere(nv, boundary_edges, distinct, star.size())) return Vertex_type::NONMANIFOLD;
     return euler_boundary ? Vertex_type::BOUNDARY : Vertex_type::INTERIOR;
   }
 
 private:
-  // `edges_` is sorted, each link edge at most twice.  Checks connectivity, the boundary loop,
-  // the Euler characteristic, and that each link vertex has a disc or half-disc neighbourhood
-  // (its link edges form a single path or cycle).
-  bool is_disc_or_sphere(std::size_t boundary_edges, std::size_t link_edges, std::size_t link_triangles) {
-    // Link vertices: local ids.
-    verts_.clear();
-    for (const auto& e : edges_) {
-      verts_.push_back(e.first);
-      verts_.push_back(e.second);
+  struct Link_edge {
+    std::uint32_t a, b, count;
+  };
+
+  // An open-addressing map from 64-bit keys to dense ids, cleared in O(1) by a generation stamp.
+  struct Small_map {
+    std::vector<std::uint64_t> keys;
+    std::vector<std::uint32_t> values, stamps;
+    std::uint32_t generation = 0;
+    std::size_t mask = 0;
+    void reset(std::size_t n) {
+      std::size_t size = 16;
+      while (size < 2 * n) size *= 2;
+      if (keys.size() < size) {
+        keys.assign(size, 0);
+        values.assign(size, 0);
+        stamps.assign(size, 0);
+        generation = 0;
+      }
+      mask = size - 1;
+      if (++generation == 0) {
+        std::fill(stamps.begin(), stamps.end(), 0);
+        generation = 1;
+      }
     }
-    std::sort(verts_.begin(), verts_.end());
-    verts_.erase(std::unique(verts_.begin(), verts_.end()), verts_.end());
-    auto id = [&](Index x) {
-      return static_cast<std::uint32_t>(std::lower_bound(verts_.begin(), verts_.end(), x) - verts_.begin());
-    };
-    const std::size_t nv = verts_.size();
+    // the id of `key`; a new key gets `next`, which is then incremented
+    std::uint32_t& find_or_insert(std::uint64_t key, std::uint32_t& next) {
+      std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask;
+      while (stamps[h] == generation) {
+        if (keys[h] == key) return values[h];
+        h = (h + 1) & mask;
+      }
+      stamps[h] = generation;
+      keys[h] = key;
+      values[h] = next++;
+      return values[h];
+    }
+  };
+
+  // Checks the Euler characteristic of the link, its connectivity, and that its boundary is a
+  // single simple loop (each link edge is in at most two link triangles here).
+  bool is_disc_or_sphere(std::size_t nv, std::size_t boundary_edges, std::size_t link_edges,
+                         std::size_t link_triangles) {
     const long long chi = static_cast<long long>(nv) - static_cast<long long>(link_edges) +
                           static_cast<long long>(link_triangles);
     if (boundary_edges == 0 ? chi != 2 : chi != 1) return false;
-    // Connected link; boundary edges form one simple loop.
     uf_.reset(nv);
     std::size_t components = nv;
-    boundary_degree_.assign(nv, 0);
-    std::size_t boundary_vertices = 0;
-    for (std::size_t i = 0; i < edges_.size();) {
-      const bool twice = i + 1 < edges_.size() && edges_[i + 1] == edges_[i];
-      const std::uint32_t a = id(edges_[i].first), b = id(edges_[i].second);
-      if (uf_.unite(a, b)) --components;
-      if (!twice) {
-        boundary_vertices += (boundary_degree_[a]++ == 0);
-        boundary_vertices += (boundary_degree_[b]++ == 0);
-      }
-      i += twice ? 2 : 1;
-    }
+    for (const Link_edge& e : link_edges_)
+      if (uf_.unite(e.a, e.b)) --components;
     if (components != 1) return false;
     if (boundary_edges == 0) return true;
+    boundary_degree_.assign(nv, 0);
+    std::size_t boundary_vertices = 0;
+    for (const Link_edge& e : link_edges_)
+      if (e.count == 1) {
+        boundary_vertices += (boundary_degree_[e.a]++ == 0);
+        boundary_vertices += (boundary_degree_[e.b]++ == 0);
+      }
     for (std::size_t i = 0; i < nv; ++i)
       if (boundary_degree_[i] != 0 && boundary_degree_[i] != 2) return false;
-    // Boundary vertices all of degree 2: disjoint cycles; a single loop has as many vertices as
-    // edges and is connected.
+    // All boundary vertices of degree 2: disjoint cycles; a single loop is connected.
     if (boundary_vertices != boundary_edges) return false;
     uf_.reset(nv);
     std::size_t loops = boundary_vertices;
-    for (std::size_t i = 0; i < edges_.size();) {
-      const bool twice = i + 1 < edges_.size() && edges_[i + 1] == edges_[i];
-      if (!twice && uf_.unite(id(edges_[i].first), id(edges_[i].second))) --loops;
-      i += twice ? 2 : 1;
-    }
+    for (const Link_edge& e : link_edges_)
+      if (e.count == 1 && uf_.unite(e.a, e.b)) --loops;
     return loops == 1;
   }
 
-  std::vector<std::pair<Index, Index>> edges_;
-  std::vector<Index> verts_;
+  Small_map vertex_ids_, edge_ids_;
+  std::vector<Link_edge> link_edges_;
   std::vector<unsigned char> boundary_degree_;
   internal::Small_union_find uf_;
 };
@@ -196,6 +219,8 @@ template <class Octree>
 Boundary_result<Octree> compute_boundary(const Octree& tree, bool with_triangles = true) {
   using Index = typename Octree::Index;
   Boundary_result<Octree> r;
+  if (tree.number_of_vertices() > 0xffffffffu)
+    throw std::invalid_argument("compute_boundary: more than 2^32 vertices are not supported");
   r.vertex_type.assign(tree.number_of_vertices(), Vertex_type::UNREFERENCED);
   Vertex_classifier<Octree> classifier;
   const unsigned relations = VERTEX_TETRAHEDRA | (with_triangles ? TRIANGLES : 0u);
