@@ -96,7 +96,9 @@ public:
     bool is_leaf() const { return first_child == no_node; }
     std::size_t number_of_vertices() const { return vertex_end - vertex_begin; }
     /// the number of tetrahedra incident in the leaf's vertices (0 for internal nodes)
-    std::size_t number_of_tetrahedra() const { return (owned_end - owned_begin) + (shared_end - shared_begin); }
+    std::size_t number_of_tetrahedra() const {
+      return (owned_end - owned_begin) + (shared_end - shared_begin);
+    }
   };
 
   /// A contiguous read-only range.
@@ -126,11 +128,27 @@ public:
       iterator(const Leaf_tetrahedra* r, std::size_t i) : r_(r), i_(i) {}
       Index operator*() const { return (*r_)[i_]; }
       Index operator[](difference_type d) const { return (*r_)[i_ + d]; }
-      iterator& operator++() { ++i_; return *this; }
-      iterator operator++(int) { iterator c = *this; ++i_; return c; }
-      iterator& operator--() { --i_; return *this; }
-      iterator& operator+=(difference_type d) { i_ += d; return *this; }
-      iterator& operator-=(difference_type d) { i_ -= d; return *this; }
+      iterator& operator++() {
+        ++i_;
+        return *this;
+      }
+      iterator operator++(int) {
+        iterator c = *this;
+        ++i_;
+        return c;
+      }
+      iterator& operator--() {
+        --i_;
+        return *this;
+      }
+      iterator& operator+=(difference_type d) {
+        i_ += d;
+        return *this;
+      }
+      iterator& operator-=(difference_type d) {
+        i_ -= d;
+        return *this;
+      }
       friend iterator operator+(iterator a, difference_type d) { return a += d; }
       friend iterator operator-(iterator a, difference_type d) { return a -= d; }
       friend difference_type operator-(const iterator& a, const iterator& b) {
@@ -229,8 +247,8 @@ public:
   /// the tetrahedra incident in the vertices of leaf `n` (its star), in increasing index order
   Leaf_tetrahedra leaf_tetrahedra(Node_index n) const {
     const Node& nd = nodes_[n];
-    return Leaf_tetrahedra(leaf_tetrahedra_.data() + nd.shared_begin, nd.shared_end - nd.shared_begin, nd.owned_begin,
-                           nd.owned_end);
+    return Leaf_tetrahedra(leaf_tetrahedra_.data() + nd.shared_begin, nd.shared_end - nd.shared_begin,
+                           nd.owned_begin, nd.owned_end);
   }
   /// the concatenation of the listed (shared) parts of all leaves: `(chi - 1) |T|` indices
   const std::vector<Index>& shared_tetrahedra_array() const { return leaf_tetrahedra_; }
@@ -496,8 +514,8 @@ void PR_star_octree_3<GT, I>::split_vertices(const std::vector<std::array<double
       throw std::invalid_argument("PR_star_octree_3: too many octree nodes for the index type");
     nodes_[item.node].first_child = first;
     for (unsigned c = 0; c < 8; ++c)
-      nodes_.push_back(Node{static_cast<Index>(b + start[c]), static_cast<Index>(b + start[c + 1]), 0, 0, 0, 0,
-                            no_node, item.node});
+      nodes_.push_back(Node{static_cast<Index>(b + start[c]), static_cast<Index>(b + start[c + 1]), 0, 0, 0,
+                            0, no_node, item.node});
     // Push the children in reverse so that child 0 is visited first: leaves come out depth first.
     for (unsigned c = 8; c-- > 0;) {
       Item child{static_cast<Node_index>(first + c), item.lo, item.hi, item.depth + 1};
@@ -519,40 +537,49 @@ void PR_star_octree_3<GT, I>::build_tetrahedra(const InputMesh& input,
   const std::size_t nv = points_.size();
   const std::size_t nt = input.number_of_tetrahedra();
 
-  // Remap to the new vertex numbering; validate.
-  std::vector<Tetrahedron> remapped(nt);
-  for (std::size_t t = 0; t < nt; ++t) {
+  // Validate and find the smallest vertex of each tetrahedron in the new numbering (the sort key).
+  // The input is read twice rather than remapped into a temporary copy of T: the peak memory of
+  // the construction stays at one T (ours) plus one index per tetrahedron.
+  auto remap = [&](std::size_t t) {
     const auto c = input.tetrahedron(t);
+    Tetrahedron r;
     for (int k = 0; k < 4; ++k) {
       const auto v = c[k];
       if (!(v >= 0) || static_cast<std::size_t>(v) >= nv)
         throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
                                     " has vertex index " + std::to_string(v) + " out of range [0, " +
                                     std::to_string(nv) + ")");
-      remapped[t][k] = from_original[static_cast<std::size_t>(v)];
+      // (the check above also rejects negative indices of a signed index type)
+      r[k] = from_original[static_cast<std::size_t>(v)];
     }
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j)
-        if (remapped[t][i] == remapped[t][j])
+        if (r[i] == r[j])
           throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
                                       " lists vertex " + std::to_string(c[i]) + " twice");
+    return r;
+  };
+  std::vector<Index> key(nt);
+  for (std::size_t t = 0; t < nt; ++t) {
+    const Tetrahedron r = remap(t);
+    key[t] = *std::min_element(r.begin(), r.end());
   }
 
   // Locality: counting sort by smallest vertex (stable, so the result is deterministic).
   std::vector<Index> start(nv + 1, 0);
-  for (const Tetrahedron& c : remapped) ++start[*std::min_element(c.begin(), c.end()) + 1];
+  for (Index k : key) ++start[k + 1];
   for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
   tetrahedron_to_original_.assign(nt, 0);
-  for (std::size_t t = 0; t < nt; ++t)
-    tetrahedron_to_original_[start[*std::min_element(remapped[t].begin(), remapped[t].end())]++] =
-        static_cast<Index>(t);
+  for (std::size_t t = 0; t < nt; ++t) tetrahedron_to_original_[start[key[t]]++] = static_cast<Index>(t);
+  std::vector<Index>().swap(key);
+  std::vector<Index>().swap(start);
 
   // Positive orientation with the exact predicate.
   tetrahedra_.resize(nt);
   reoriented_.assign((nt + 63) / 64, 0);
   auto orientation = gt_.orientation_3_object();
   for (std::size_t t = 0; t < nt; ++t) {
-    Tetrahedron c = remapped[tetrahedron_to_original_[t]];
+    Tetrahedron c = remap(tetrahedron_to_original_[t]);
     const CGAL::Orientation o = orientation(points_[c[0]], points_[c[1]], points_[c[2]], points_[c[3]]);
     if (o == CGAL::NEGATIVE) {
       std::swap(c[2], c[3]);
