@@ -357,6 +357,10 @@ P::Simplification_statistics check_run(const Mesh& mesh, const Brute& in, const 
   CHECK_EQ(s.output_tetrahedra, res.mesh.tetrahedra.size());
   CHECK_EQ(s.input_tetrahedra - s.output_tetrahedra, s.removed_tetrahedra);
   CHECK_EQ(res.input_vertex.size(), res.mesh.points.size());
+  CHECK_EQ(s.removed_per_round.size(), s.rounds);
+  std::size_t per_round = 0;
+  for (std::size_t n : s.removed_per_round) per_round += n;
+  CHECK_EQ(per_round, s.removed_tetrahedra);
 
   // Validity and topology.
   const auto v = P::check_validity(res.mesh.points, res.mesh.tetrahedra);

@@ -71,6 +71,7 @@ struct Simplification_statistics {
   std::size_t input_tetrahedra = 0, output_tetrahedra = 0, removed_tetrahedra = 0;
   std::size_t collapses = 0;
   std::size_t rounds = 0;         ///< rounds of (local simplification, compaction, rebuild)
+  std::vector<std::size_t> removed_per_round; ///< tetrahedra removed by each round
   std::size_t max_queue_size = 0; ///< the largest queue, over all leaves and rounds (the memory proxy of Table 3)
   double seconds = 0;             ///< wall-clock time of the whole run, octree builds included
   /// candidate edges (shorter than the round's threshold) that were not collapsed, by reason; a
@@ -308,6 +309,7 @@ public:
       ++stats.rounds;
       const std::size_t before = removed_;
       round(points, tets, origin, threshold);
+      stats.removed_per_round.push_back(removed_ - before);
       if (removed_ == before) {
         if (quantile && threshold < options_.max_edge_length) {
           all_candidates = true; // nothing short enough could go: try every edge under the bound
@@ -420,7 +422,6 @@ private:
         collapse(pts, st1, st2, e.v1, e.v2);
       }
     }
-    stats_->max_queue_size = (std::max)(stats_->max_queue_size, queue_.size());
     queue_ = decltype(queue_)();
 
     // Compaction, in the octree's order (spatially coherent for the next round).
