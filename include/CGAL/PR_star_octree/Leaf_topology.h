@@ -238,33 +238,43 @@ void Leaf_topology<Octree>::build_vt() {
   const auto owned = tets.owned();
   const Tetrahedron* T = tree_->tetrahedra().data();
   const Index vb = vb_;
-  // Count, then fill (CSR).  Shared tetrahedra come from the leaf's list, owned ones are the
-  // contiguous range `owned` of T: two tight loops, no per-element dispatch.
-  vt_offsets_.assign(nv + 1, 0);
+  // Count, then fill (CSR), without branches: a vertex outside the leaf goes to the dummy slot
+  // `nv` (counted in `vt_offsets_[nv + 1]`, written past the end of the real data).  Shared
+  // tetrahedra come from the leaf's list, owned ones are the contiguous range `owned` of T.
+  vt_offsets_.assign(nv + 2, 0);
   Index* count = vt_offsets_.data() + 1;
+  auto slot = [&](Index v) {
+    const std::size_t d = static_cast<Index>(v - vb); // wraps around for v < vb
+    return d < nv ? d : nv;
+  };
   auto add = [&](Index t) {
     const Tetrahedron& c = T[t];
-    for (int k = 0; k < 4; ++k) {
-      const std::size_t d = static_cast<Index>(c[k] - vb); // wraps around for c[k] < vb
-      if (d < nv) ++count[d];
-    }
+    ++count[slot(c[0])];
+    ++count[slot(c[1])];
+    ++count[slot(c[2])];
+    ++count[slot(c[3])];
   };
   for (Index t : shared) add(t);
   for (Index t = owned.first; t < owned.second; ++t) add(t);
+  vt_offsets_[nv + 1] = 0; // the dummy slot writes to one trash position
   for (std::size_t i = 0; i < nv; ++i) vt_offsets_[i + 1] += vt_offsets_[i];
-  vt_.resize(vt_offsets_[nv]);
+  vt_.resize(vt_offsets_[nv] + 1);
   scratch_.assign(vt_offsets_.begin(), vt_offsets_.end() - 1);
+  scratch_[nv] = vt_offsets_[nv];
   Index* pos = scratch_.data();
   Index* out = vt_.data();
   auto put = [&](Index t) {
     const Tetrahedron& c = T[t];
     for (int k = 0; k < 4; ++k) {
-      const std::size_t d = static_cast<Index>(c[k] - vb);
-      if (d < nv) out[pos[d]++] = t;
+      const std::size_t i = slot(c[k]);
+      out[pos[i]] = t;
+      pos[i] += (i != nv);
     }
   };
   for (Index t : shared) put(t);
   for (Index t = owned.first; t < owned.second; ++t) put(t);
+  vt_offsets_.resize(nv + 1);
+  vt_.resize(vt_offsets_[nv]);
 }
 
 // Algorithm 2 and the triangles: the faces with a vertex in the leaf, sorted and paired.
