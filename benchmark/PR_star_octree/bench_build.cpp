@@ -11,6 +11,8 @@
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/IO.h>
 
+#include "bench_util.h"
+
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -25,26 +27,13 @@ namespace {
 using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
 using Octree = CGAL::PR_star_octree_3<>;
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-std::string kv_name(std::size_t kv) {
-  return kv == Octree::infinite_bucket_size ? "inf" : std::to_string(kv);
-}
+using prstar_bench::base_name;
+using prstar_bench::kv_name;
+using prstar_bench::now;
 
 // Peak resident set size of this process, in bytes (Linux).
 std::size_t peak_rss() {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::stoull(line.substr(6)) * 1024;
-  return 0;
-}
-
-std::string base_name(const std::string& p) {
-  const std::size_t s = p.find_last_of('/');
-  return s == std::string::npos ? p : p.substr(s + 1);
+  return prstar_bench::status_kib("VmHWM:") * 1024;
 }
 
 } // namespace
@@ -61,11 +50,7 @@ int main(int argc, char** argv) {
     else if (a == "--csv" && i + 1 < argc)
       csv_file = argv[++i];
     else if (a == "--kv" && i + 1 < argc) {
-      kvs.clear();
-      std::stringstream s(argv[++i]);
-      std::string item;
-      while (std::getline(s, item, ','))
-        kvs.push_back(item == "inf" ? Octree::infinite_bucket_size : std::stoull(item));
+      kvs = prstar_bench::parse_kv_list(argv[++i]);
     } else if (!a.empty() && a[0] == '-') {
       std::cerr << "usage: bench_build [--kv 10,20,...,inf] [--reps R] [--csv OUT.csv] MESH...\n";
       return 2;

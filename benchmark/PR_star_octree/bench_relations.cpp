@@ -22,6 +22,7 @@
 
 #include <cmath>
 
+#include "bench_util.h"
 #include "baselines/Cgal_triangulation_baseline.h"
 #include "baselines/Extended_IA.h"
 #include "baselines/curvature_baselines.h"
@@ -43,22 +44,15 @@
 
 namespace {
 
+using prstar_bench::base_name;
+using prstar_bench::best_of;
+using prstar_bench::kv_name;
+using prstar_bench::now;
+
 using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
 using Octree = CGAL::PR_star_octree_3<>;
 using Local = CGAL::PR_star_octree::Leaf_topology<Octree>;
 using Index = std::uint32_t;
-
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-std::size_t status_kib(const char* key) {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind(key, 0) == 0) return std::stoull(line.substr(std::strlen(key)));
-  return 0;
-}
 
 // What one child process measures.
 struct Result {
@@ -76,48 +70,6 @@ struct Result {
   double chi = 0, cost_overhead = 0, cost_total = 0;
   bool ok = false;
 };
-
-// Runs `job` in a child process with a fresh peak-RSS counter; the result comes back through a pipe.
-Result in_child(const std::function<Result()>& job) {
-  int fd[2];
-  if (pipe(fd) != 0) return {};
-  std::cout.flush();
-  const pid_t pid = fork();
-  if (pid == 0) {
-    close(fd[0]);
-    { std::ofstream("/proc/self/clear_refs") << "5"; } // reset the peak RSS (Linux >= 4.0)
-    const std::size_t base = status_kib("VmRSS:");
-    Result r;
-    try {
-      r = job();
-      r.peak_rss_bytes = (status_kib("VmHWM:") - base) * 1024;
-      r.ok = true;
-    } catch (const std::exception& e) {
-      std::cerr << "  failed: " << e.what() << '\n';
-    }
-    if (write(fd[1], &r, sizeof r) != static_cast<ssize_t>(sizeof r)) _exit(1);
-    _exit(0);
-  }
-  close(fd[1]);
-  Result r;
-  if (read(fd[0], &r, sizeof r) != static_cast<ssize_t>(sizeof r)) r.ok = false;
-  close(fd[0]);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return r;
-}
-
-template <class F>
-double best_of(int reps, F&& f) {
-  double best = std::numeric_limits<double>::infinity();
-  for (int r = 0; r <= reps; ++r) { // r = 0: warm-up
-    const double t0 = now();
-    f();
-    const double t = now() - t0;
-    if (r > 0) best = std::min(best, t);
-  }
-  return best;
-}
 
 // The scalar field: the mesh's own (first point-data array), else x^2 + sin(3y) + z.
 std::vector<double> field_values(const Mesh& m) {
@@ -250,15 +202,6 @@ Mesh prstar_order(const Mesh& mesh) {
   return m;
 }
 
-std::string base_name(const std::string& p) {
-  const std::size_t s = p.find_last_of('/');
-  return s == std::string::npos ? p : p.substr(s + 1);
-}
-
-std::string kv_name(std::size_t kv) {
-  return kv == Octree::infinite_bucket_size ? "inf" : std::to_string(kv);
-}
-
 std::string fmt(const char* f, double v) {
   char b[64];
   std::snprintf(b, sizeof b, f, v);
@@ -282,11 +225,7 @@ int main(int argc, char** argv) {
     else if (a == "--no-cgal")
       with_cgal = false;
     else if (a == "--kv" && i + 1 < argc) {
-      kvs.clear();
-      std::stringstream s(argv[++i]);
-      std::string item;
-      while (std::getline(s, item, ','))
-        kvs.push_back(item == "inf" ? Octree::infinite_bucket_size : std::stoull(item));
+      kvs = prstar_bench::parse_kv_list(argv[++i]);
     } else if (!a.empty() && a[0] == '-') {
       std::cerr
           << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--no-cgal] [--csv OUT.csv] MESH...\n";
@@ -344,19 +283,21 @@ int main(int argc, char** argv) {
     };
     std::vector<Row> rows;
     std::cerr << "  extended IA ...\n";
-    rows.push_back({"extended IA", "file", "-", in_child([&] { return run_ia(file_mesh, reps); })});
-    rows.push_back({"extended IA", "PR-star", "-", in_child([&] { return run_ia(ordered, reps); })});
+    rows.push_back({"extended IA", "file", "-",
+                    prstar_bench::in_child<Result>([&] { return run_ia(file_mesh, reps); })});
+    rows.push_back({"extended IA", "PR-star", "-",
+                    prstar_bench::in_child<Result>([&] { return run_ia(ordered, reps); })});
     if (with_cgal) {
       std::cerr << "  CGAL Triangulation_3 ...\n";
-      rows.push_back(
-          {"CGAL Triangulation_3", "file", "-", in_child([&] { return run_cgal(file_mesh, reps); })});
-      rows.push_back(
-          {"CGAL Triangulation_3", "PR-star", "-", in_child([&] { return run_cgal(ordered, reps); })});
+      rows.push_back({"CGAL Triangulation_3", "file", "-",
+                      prstar_bench::in_child<Result>([&] { return run_cgal(file_mesh, reps); })});
+      rows.push_back({"CGAL Triangulation_3", "PR-star", "-",
+                      prstar_bench::in_child<Result>([&] { return run_cgal(ordered, reps); })});
     }
     for (std::size_t kv : kvs) {
       std::cerr << "  PR-star k_v = " << kv_name(kv) << " ...\n";
-      rows.push_back(
-          {"PR-star", "file", kv_name(kv), in_child([&] { return run_prstar(file_mesh, kv, reps); })});
+      rows.push_back({"PR-star", "file", kv_name(kv),
+                      prstar_bench::in_child<Result>([&] { return run_prstar(file_mesh, kv, reps); })});
     }
     const Result& ia_file = rows[0].r;
     const Result& ia_same = rows[1].r;

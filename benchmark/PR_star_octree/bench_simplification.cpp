@@ -19,8 +19,7 @@
 #include <CGAL/PR_star_octree/IO.h>
 #include <CGAL/PR_star_octree/simplification.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
+#include "bench_util.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -41,69 +40,43 @@ namespace P = CGAL::PR_star_octree;
 
 constexpr std::size_t inf = Octree::infinite_bucket_size;
 
-std::size_t status_kib(const char* key) {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind(key, 0) == 0) return std::stoull(line.substr(std::strlen(key)));
-  return 0;
-}
-
 // What one child process measures (plain data: it comes back through a pipe).
 struct Result {
   bool ok = false;
-  std::size_t removed = 0, first_round = 0, output_tetrahedra = 0, rounds = 0, max_queue = 0, peak_rss_bytes = 0;
+  std::size_t removed = 0, first_round = 0, output_tetrahedra = 0, rounds = 0, max_queue = 0,
+              peak_rss_bytes = 0;
   std::size_t blocked_leaves = 0, blocked_boundary = 0, blocked_flip = 0, blocked_link = 0;
   double seconds = 0;
 };
 
 Result run_in_child(const Mesh& mesh, std::size_t kv, double target, int reps) {
-  int fd[2];
-  if (pipe(fd) != 0) return {};
-  std::cout.flush();
-  const pid_t pid = fork();
-  if (pid == 0) {
-    close(fd[0]);
-    { std::ofstream("/proc/self/clear_refs") << "5"; } // reset the peak RSS (Linux >= 4.0)
-    const std::size_t base = status_kib("VmRSS:");
+  return prstar_bench::in_child<Result>([&] {
     Result r;
-    try {
-      P::Simplification_options o;
-      o.target_fraction = target;
-      o.bucket_size = kv;
-      r.seconds = std::numeric_limits<double>::infinity();
-      for (int i = 0; i < reps; ++i) {
-        const auto res = P::simplify(mesh, o);
-        const auto& s = res.statistics;
-        r.seconds = std::min(r.seconds, s.seconds);
-        r.removed = s.removed_tetrahedra;
-        r.first_round = s.removed_per_round.empty() ? 0 : s.removed_per_round.front();
-        r.output_tetrahedra = s.output_tetrahedra;
-        r.rounds = s.rounds;
-        r.max_queue = s.max_queue_size;
-        r.blocked_leaves = s.blocked.different_leaves;
-        r.blocked_boundary = s.blocked.boundary;
-        r.blocked_flip = s.blocked.flip;
-        r.blocked_link = s.blocked.link;
-      }
-      r.peak_rss_bytes = (status_kib("VmHWM:") - base) * 1024;
-      r.ok = true;
-    } catch (const std::exception& e) {
-      std::cerr << "  failed: " << e.what() << '\n';
+    P::Simplification_options o;
+    o.target_fraction = target;
+    o.bucket_size = kv;
+    r.seconds = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < reps; ++i) {
+      const auto res = P::simplify(mesh, o);
+      const auto& s = res.statistics;
+      r.seconds = std::min(r.seconds, s.seconds);
+      r.removed = s.removed_tetrahedra;
+      r.first_round = s.removed_per_round.empty() ? 0 : s.removed_per_round.front();
+      r.output_tetrahedra = s.output_tetrahedra;
+      r.rounds = s.rounds;
+      r.max_queue = s.max_queue_size;
+      r.blocked_leaves = s.blocked.different_leaves;
+      r.blocked_boundary = s.blocked.boundary;
+      r.blocked_flip = s.blocked.flip;
+      r.blocked_link = s.blocked.link;
     }
-    if (write(fd[1], &r, sizeof r) != static_cast<ssize_t>(sizeof r)) _exit(1);
-    _exit(0);
-  }
-  close(fd[1]);
-  Result r;
-  if (read(fd[0], &r, sizeof r) != static_cast<ssize_t>(sizeof r)) r.ok = false;
-  close(fd[0]);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return r;
+    return r;
+  });
 }
 
-std::string kv_string(std::size_t kv) { return kv == inf ? "inf" : std::to_string(kv); }
+std::string kv_string(std::size_t kv) {
+  return kv == inf ? "inf" : std::to_string(kv);
+}
 
 // 68.7 K, 1.49 M, as in the paper
 std::string human(double x) {
@@ -143,10 +116,7 @@ std::string cpu_model() {
   return "unknown CPU";
 }
 
-std::string base_name(const std::string& f) {
-  const std::size_t slash = f.find_last_of('/');
-  return slash == std::string::npos ? f : f.substr(slash + 1);
-}
+using prstar_bench::base_name;
 
 } // namespace
 
@@ -184,23 +154,25 @@ int main(int argc, char** argv) {
   }
 
   std::ostringstream csv;
-  csv << "mesh,vertices,tetrahedra,kv,target,removed,removed_pct_of_inf,first_round_removed,first_round_pct_of_inf,"
+  csv << "mesh,vertices,tetrahedra,kv,target,removed,removed_pct_of_inf,first_round_removed,first_round_pct_"
+         "of_inf,"
          "seconds,seconds_pct_of_inf,max_queue,"
          "peak_rss_bytes,rounds,output_tetrahedra,blocked_different_leaves,blocked_boundary,blocked_flip,"
          "blocked_link\n";
-  std::cout << "# Table 3: local half-edge-collapse simplification on the PR-star octree\n\n"
-            << "Machine: " << cpu_model() << ", " << sysconf(_SC_NPROCESSORS_ONLN)
-            << " cores online (shared), single thread.  Each run in its own process; peak RSS is the growth "
-               "of VmHWM during the run (input mesh already loaded).  Times include every octree build "
-               "(one per round); min of "
-            << reps << " run(s).\n\n"
-            << "Priority: shortest edge first; collapse v2 into v1 (v1 < v2); boundary, exact-orientation and "
-               "link conditions; rounds of (per-leaf queues, compaction, rebuild).  (%) columns are relative to "
-               "k_v = inf (the single-leaf, global run).  Rounds go on until the target is met, so \"removed\" "
-               "is the target unless the local algorithm stalls; \"1st round\" is what the first pass of per-leaf "
-               "queues removes under the same length threshold (the paper's measure of the edges lost to leaf "
-               "borders).  \"blocked\" = candidates rejected: ends in different leaves / boundary / flip / "
-               "link.\n\n";
+  std::cout
+      << "# Table 3: local half-edge-collapse simplification on the PR-star octree\n\n"
+      << "Machine: " << cpu_model() << ", " << sysconf(_SC_NPROCESSORS_ONLN)
+      << " cores online (shared), single thread.  Each run in its own process; peak RSS is the growth "
+         "of VmHWM during the run (input mesh already loaded).  Times include every octree build "
+         "(one per round); min of "
+      << reps << " run(s).\n\n"
+      << "Priority: shortest edge first; collapse v2 into v1 (v1 < v2); boundary, exact-orientation and "
+         "link conditions; rounds of (per-leaf queues, compaction, rebuild).  (%) columns are relative to "
+         "k_v = inf (the single-leaf, global run).  Rounds go on until the target is met, so \"removed\" "
+         "is the target unless the local algorithm stalls; \"1st round\" is what the first pass of per-leaf "
+         "queues removes under the same length threshold (the paper's measure of the edges lost to leaf "
+         "borders).  \"blocked\" = candidates rejected: ends in different leaves / boundary / flip / "
+         "link.\n\n";
 
   for (const std::string& file : files) {
     Mesh mesh;
@@ -211,7 +183,8 @@ int main(int argc, char** argv) {
       return 1;
     }
     const std::string name = base_name(file);
-    std::cerr << name << ": " << mesh.points.size() << " vertices, " << mesh.tetrahedra.size() << " tetrahedra\n";
+    std::cerr << name << ": " << mesh.points.size() << " vertices, " << mesh.tetrahedra.size()
+              << " tetrahedra\n";
     std::cout << "## " << name << " (" << human(double(mesh.points.size())) << " vertices, "
               << human(double(mesh.tetrahedra.size())) << " tetrahedra)\n\n";
     // results[k][t]
@@ -220,14 +193,16 @@ int main(int argc, char** argv) {
       for (std::size_t k = 0; k < kvs.size(); ++k) {
         std::cerr << "  k_v = " << kv_string(kvs[k]) << ", target " << targets[t] << " ... " << std::flush;
         results[k][t] = run_in_child(mesh, kvs[k], targets[t], reps);
-        std::cerr << (results[k][t].ok ? fixed(results[k][t].seconds, 2) + " s" : std::string("failed")) << '\n';
+        std::cerr << (results[k][t].ok ? fixed(results[k][t].seconds, 2) + " s" : std::string("failed"))
+                  << '\n';
       }
     for (std::size_t t = 0; t < targets.size(); ++t) {
       const Result& g = results[0][t];
-      std::cout << "### about " << static_cast<int>(targets[t] * 100 + 0.5) << "% of the tetrahedra removed\n\n"
-                << "| k_v | removed | (%) | 1st round | (%) | seconds | (%) | max queue | peak RSS | rounds | "
-                   "blocked: leaves | boundary | flip | link |\n"
-                << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+      std::cout
+          << "### about " << static_cast<int>(targets[t] * 100 + 0.5) << "% of the tetrahedra removed\n\n"
+          << "| k_v | removed | (%) | 1st round | (%) | seconds | (%) | max queue | peak RSS | rounds | "
+             "blocked: leaves | boundary | flip | link |\n"
+          << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
       for (std::size_t k = 0; k < kvs.size(); ++k) {
         const Result& r = results[k][t];
         if (!r.ok) {
@@ -245,12 +220,11 @@ int main(int argc, char** argv) {
                   << fixed(double(r.peak_rss_bytes) / (1 << 20), 1) << " MiB | " << r.rounds << " | "
                   << human(double(r.blocked_leaves)) << " | " << human(double(r.blocked_boundary)) << " | "
                   << human(double(r.blocked_flip)) << " | " << human(double(r.blocked_link)) << " |\n";
-        csv << name << ',' << mesh.points.size() << ',' << mesh.tetrahedra.size() << ',' << kv_string(kvs[k]) << ','
-            << targets[t] << ',' << r.removed << ',' << fixed(rp, 2) << ',' << r.first_round << ',' << fixed(fp, 2) << ','
-            << fixed(r.seconds, 4) << ','
-            << fixed(tp, 2) << ',' << r.max_queue << ',' << r.peak_rss_bytes << ',' << r.rounds << ','
-            << r.output_tetrahedra << ',' << r.blocked_leaves << ',' << r.blocked_boundary << ',' << r.blocked_flip
-            << ',' << r.blocked_link << '\n';
+        csv << name << ',' << mesh.points.size() << ',' << mesh.tetrahedra.size() << ',' << kv_string(kvs[k])
+            << ',' << targets[t] << ',' << r.removed << ',' << fixed(rp, 2) << ',' << r.first_round << ','
+            << fixed(fp, 2) << ',' << fixed(r.seconds, 4) << ',' << fixed(tp, 2) << ',' << r.max_queue << ','
+            << r.peak_rss_bytes << ',' << r.rounds << ',' << r.output_tetrahedra << ',' << r.blocked_leaves
+            << ',' << r.blocked_boundary << ',' << r.blocked_flip << ',' << r.blocked_link << '\n';
       }
       std::cout << '\n';
     }

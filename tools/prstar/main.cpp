@@ -316,16 +316,18 @@ bool file_exists(const std::string& f) {
   return ::stat(f.c_str(), &st) == 0;
 }
 
-// Writes through a temporary file renamed at the end: an error never leaves a half-written OUT.
-void write_mesh_safely(const std::string& out, const Mesh& mesh) {
-  // The temporary name keeps the extension, which selects the format: OUT.mesh -> OUT.prstar-tmp.mesh
+// Writes OUT through a temporary file renamed at the end: an error never leaves a half-written
+// OUT, and an existing OUT stays untouched until the new one is complete.  `write(tmp)` writes the
+// temporary; its name keeps the extension, which selects the format: OUT.mesh -> OUT.prstar-tmp.mesh
+template <class Write>
+void write_through_temporary(const std::string& out, Write&& write) {
   const std::size_t dot = out.find_last_of('.');
   const std::size_t slash = out.find_last_of('/');
   const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
   const std::string tmp =
       has_ext ? out.substr(0, dot) + ".prstar-tmp" + out.substr(dot) : out + ".prstar-tmp";
   try {
-    CGAL::PR_star_octree::IO::write_tetrahedral_mesh(tmp, mesh);
+    write(tmp);
   } catch (...) {
     std::remove(tmp.c_str());
     throw;
@@ -334,6 +336,11 @@ void write_mesh_safely(const std::string& out, const Mesh& mesh) {
     std::remove(tmp.c_str());
     throw std::runtime_error(out + ": cannot write the output file");
   }
+}
+
+void write_mesh_safely(const std::string& out, const Mesh& mesh) {
+  write_through_temporary(
+      out, [&](const std::string& tmp) { CGAL::PR_star_octree::IO::write_tetrahedral_mesh(tmp, mesh); });
 }
 
 int cmd_generate(int argc, char** argv) {
@@ -402,17 +409,8 @@ void check_output(const std::string& out, const std::string& input, bool force,
 // The mesh as the user gave it, with extra point arrays (user order), written through a temporary.
 void write_vtu_safely(const std::string& out, const Mesh& mesh,
                       const std::vector<CGAL::PR_star_octree::Point_data_array>& arrays) {
-  const std::string tmp = out.substr(0, out.size() - 4) + ".prstar-tmp.vtu";
-  try {
-    CGAL::PR_star_octree::IO::write_vtu(tmp, mesh, arrays);
-  } catch (...) {
-    std::remove(tmp.c_str());
-    throw;
-  }
-  if (std::rename(tmp.c_str(), out.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(out + ": cannot write the output file");
-  }
+  write_through_temporary(
+      out, [&](const std::string& tmp) { CGAL::PR_star_octree::IO::write_vtu(tmp, mesh, arrays); });
 }
 
 std::size_t parse_single_kv(const Arguments& args) {
@@ -584,8 +582,7 @@ int cmd_curvature(int argc, char** argv) {
   }
   if (!csv.empty()) {
     progress.phase("writing " + csv);
-    const std::string tmp = csv.substr(0, csv.size() - 4) + ".prstar-tmp.csv";
-    {
+    write_through_temporary(csv, [&](const std::string& tmp) {
       std::ofstream f(tmp);
       f << std::setprecision(std::numeric_limits<double>::max_digits10);
       f << "vertex,x,y,z,boundary,distortion\n";
@@ -593,15 +590,8 @@ int cmd_curvature(int argc, char** argv) {
         f << v << ',' << mesh.points[v].x() << ',' << mesh.points[v].y() << ',' << mesh.points[v].z() << ','
           << static_cast<int>(boundary.values[v]) << ',' << distortion.values[v] << '\n';
       f.flush();
-      if (!f) {
-        std::remove(tmp.c_str());
-        throw std::runtime_error(csv + ": cannot write the output file");
-      }
-    }
-    if (std::rename(tmp.c_str(), csv.c_str()) != 0) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error(csv + ": cannot write the output file");
-    }
+      if (!f) throw std::runtime_error(csv + ": cannot write the output file");
+    });
     progress.finish();
   }
   if (args.flag("--json")) {
@@ -678,7 +668,8 @@ int cmd_validate(int argc, char** argv) {
     t.add({"Euler characteristic", std::to_string(r.euler_characteristic)});
     t.add({"boundary triangles", std::to_string(r.boundary_triangles)});
     t.add({"boundary components", std::to_string(r.boundary_components)});
-    std::cout << input << ": " << (r.valid ? "valid" : "INVALID") << " (" << prstar::fixed(seconds, 3) << " s)\n"
+    std::cout << input << ": " << (r.valid ? "valid" : "INVALID") << " (" << prstar::fixed(seconds, 3)
+              << " s)\n"
               << t.str();
   }
   return r.valid ? 0 : 1;
@@ -744,7 +735,10 @@ int cmd_simplify(int argc, char** argv) {
   t.add({"input tetrahedra", std::to_string(s.input_tetrahedra)});
   t.add({"output tetrahedra", std::to_string(s.output_tetrahedra)});
   t.add({"removed", std::to_string(s.removed_tetrahedra) + " (" +
-                        prstar::fixed(s.input_tetrahedra ? 100. * double(s.removed_tetrahedra) / double(s.input_tetrahedra) : 0., 1) +
+                        prstar::fixed(s.input_tetrahedra
+                                          ? 100. * double(s.removed_tetrahedra) / double(s.input_tetrahedra)
+                                          : 0.,
+                                      1) +
                         "%)"});
   t.add({"vertices", std::to_string(s.input_vertices) + " -> " + std::to_string(s.output_vertices)});
   t.add({"rounds", std::to_string(s.rounds)});
