@@ -16,8 +16,8 @@ namespace IO {
 
 /// \ingroup PkgPRStarOctreeIO
 /// Thrown by every reader of `CGAL/PR_star_octree/IO/` on any problem with its input: missing or
-/// unreadable file, syntax error, truncated data, count mismatch, index out of range, non-finite
-/// coordinate, unsupported feature of the format...
+/// unreadable file, syntax error, truncated data, count mismatch, index out of range or listed
+/// twice in a tetrahedron, non-finite coordinate, unsupported feature of the format...
 ///
 /// `what()` reads `FILE:LINE: message` when a line number is known, `FILE: message` otherwise
 /// (binary data, whole-file problems); for binary data the message names the array and the index

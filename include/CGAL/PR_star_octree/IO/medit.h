@@ -135,6 +135,8 @@ void read_medit_text(std::string_view text, const std::string& name, Mesh& resul
         r.set_context("tetrahedron", i + 1);
         std::array<long long, 4> t;
         for (long long& v : t) v = r.expect_integer("vertex index");
+        long long twice;
+        if (has_repeated_vertex(t, twice)) r.fail("vertex index " + std::to_string(twice) + " listed twice");
         const long long ref = r.expect_integer("reference");
         if (ref < std::numeric_limits<int>::min() || ref > std::numeric_limits<int>::max())
           r.fail("reference " + std::to_string(ref) + " out of the int range");

@@ -126,6 +126,8 @@ void read_tet_off_text(std::string_view text, const std::string& name, Mesh& res
                " vertices)");
       t[k] = static_cast<Index>(v);
     }
+    long long twice;
+    if (has_repeated_vertex(t, twice)) r.fail("vertex index " + std::to_string(twice) + " listed twice");
     mesh.tetrahedra.push_back(t);
   }
   r.clear_context();

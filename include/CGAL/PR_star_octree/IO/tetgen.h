@@ -175,6 +175,9 @@ void read_tetgen_text(std::string_view node_text, const std::string& node_name, 
                  ".." + std::to_string(nv - 1 + first_number) + ", as the .node file)");
         if (k < 4) t[k] = static_cast<Index>(v0);
       }
+      long long twice;
+      if (has_repeated_vertex(t, twice))
+        r.fail("vertex index " + std::to_string(twice + first_number) + " listed twice");
       mesh.tetrahedra.push_back(t);
       if (labels) {
         double a;

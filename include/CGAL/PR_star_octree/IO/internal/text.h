@@ -362,6 +362,19 @@ private:
 // ---------------------------------------------------------------------------------------------
 
 /// Appends the shortest decimal representation of `v` that reads back exactly (locale-independent).
+/// Whether two of the 4 vertex indices of `t` are equal (a tetrahedron listing a vertex twice:
+/// refused by the readers, as by `PR_star_octree_3`); `repeated` is then that index.
+template <class Tetrahedron, class Int>
+bool has_repeated_vertex(const Tetrahedron& t, Int& repeated) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (t[i] == t[j]) {
+        repeated = static_cast<Int>(t[i]);
+        return true;
+      }
+  return false;
+}
+
 inline void append_double(std::string& out, double v) {
   char buf[64];
   const std::to_chars_result r = std::to_chars(buf, buf + sizeof(buf), v);

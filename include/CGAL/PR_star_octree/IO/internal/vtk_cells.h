@@ -120,6 +120,10 @@ void vtk_cells_to_tetrahedra(const std::vector<long long>& starts, const std::ve
         fail("vertex index " + std::to_string(g) + " does not fit in the index type of the mesh");
       t[k] = static_cast<Index>(g);
     }
+    unsigned long long twice;
+    if (has_repeated_vertex(t, twice))
+      fail("cell " + std::to_string(i) + ": vertex index " + std::to_string(twice - vertex_offset) +
+           " listed twice");
     tetrahedra.push_back(t);
   }
 }
