@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+"""Writes the seed corpora of the fuzz targets (small valid files, written here) into OUT/<reader>/.
+
+Usage: make_seeds.py OUT
+"""
+import base64
+import os
+import struct
+import sys
+
+out = sys.argv[1] if len(sys.argv) > 1 else "corpus"
+
+P = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (1, 1, 1)]
+T = [(0, 1, 2, 3), (1, 2, 3, 4)]
+
+
+def put(reader, name, data):
+    d = os.path.join(out, reader)
+    os.makedirs(d, exist_ok=True)
+    with open(os.path.join(d, name), "wb") as f:
+        f.write(data if isinstance(data, bytes) else data.encode())
+
+
+# ---- Medit
+pts = "".join("%g %g %g %d\n" % (p + (i % 2,)) for i, p in enumerate(P))
+tets = "".join("%d %d %d %d 1\n" % tuple(v + 1 for v in t) for t in T)
+put("medit", "a.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n" + pts + "Tetrahedra\n2\n" + tets + "End\n")
+put("medit", "b.mesh", "# c\nMeshVersionFormatted 1\nDimension\n3\nTetrahedra 1\n5 4 3 2 9\nEdges 1\n1 2 0\n"
+    "Triangles\n1\n1 2 3 7\nCorners 1 5\nRequiredVertices\n1\n2\nVertices 5\n" + pts)
+put("medit", "c.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices 4\n0 0 0 0\n1e-300 0 0 0\n0 1e300 0 0\n"
+    "0 0 -1 0\nTetrahedra 1\n1 2 3 4 0\nEnd\n")
+
+# ---- TetGen (.node NUL .ele)
+node = "5 3 1 1\n" + "".join("%d %g %g %g 0.5 %d\n" % ((i + 1,) + p + (i % 2,)) for i, p in enumerate(P))
+ele = "2 4 1\n" + "".join("%d %d %d %d %d 3\n" % ((i + 1,) + tuple(v + 1 for v in t)) for i, t in enumerate(T))
+put("tetgen", "a", node + "\0" + ele)
+node0 = "# zero based\n5 3\n" + "".join("%d %g %g %g\n" % ((i,) + p) for i, p in enumerate(P))
+ele0 = "2 4\n" + "".join("%d %d %d %d %d\n" % ((i,) + t) for i, t in enumerate(T))
+put("tetgen", "b", node0 + "\0" + ele0)
+put("tetgen", "c", "2 10 1\n0 0 1 2 3 0 0 0 0 0 0 2.0\n1 1 2 3 4 0 0 0 0 0 0 -3.2\n")
+put("tetgen", "d", node0 + "\0" + "1 10 0\n0 0 1 2 3 4 4 4 4 4 4\n")
+
+# ---- legacy VTK
+head = "# vtk DataFile Version 4.2\nsmall mesh\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+vp = "POINTS 5 float\n" + " ".join("%g %g %g" % p for p in P) + "\n"
+put("vtk", "a.vtk", head + vp + "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n"
+    "CELL_DATA 2\nSCALARS label int 1\nLOOKUP_TABLE default\n3 4\nVECTORS v double\n1 2 3 4 5 6\n"
+    "POINT_DATA 5\nSCALARS temp%20x float\nLOOKUP_TABLE default\n0.5 1 2 3 4\n"
+    "SCALARS rgb float 3\n0 0 0 1 1 1 2 2 2 3 3 3 4 4 4\nNORMALS n float\n0 0 1 0 0 1 0 0 1 0 0 1 0 0 1\n"
+    "FIELD FieldData 2\nf 1 5 double\n10 11 12 13 14\ng 2 5 int\n0 0 0 0 0 0 0 0 0 0\n")
+put("vtk", "b.vtk", "# vtk DataFile Version 5.1\nvtk output\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+    "POINTS 5 double\n0 0 0 1 0 0 0 1 0 0 0 1 1 1 1\nCELLS 3 8\nOFFSETS vtktypeint64\n0 4 8\n"
+    "CONNECTIVITY vtktypeint64\n0 1 2 3 1 2 3 4\nCELL_TYPES 2\n10 10\n")
+put("vtk", "c.vtk", head + vp + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n"
+    "CELL_DATA 1\nFIELD F 1\nid 1 1 int\n1\nPOINT_DATA 5\nSCALARS s double\n0 1 2 3 4\n")
+
+# ---- VTK XML
+def vtu(fmt, header="UInt32", appended=None):
+    pf = struct.pack("<15d", *[c for p in P for c in p])
+    conn = struct.pack("<8q", *[v for t in T for v in t])
+    offs = struct.pack("<2q", 4, 8)
+    types = struct.pack("<2B", 10, 10)
+    temp = struct.pack("<5d", 0.5, 1, 2, 3, 4)
+    hfmt = "<I" if header == "UInt32" else "<Q"
+    arrays = [("temp", "Float64", 1, temp), ("", "Float64", 3, pf), ("connectivity", "Int64", 1, conn),
+              ("offsets", "Int64", 1, offs), ("types", "UInt8", 1, types)]
+    body = {}
+    app = b""
+    for name, typ, nc, data in arrays:
+        if fmt == "ascii":
+            if typ == "Float64":
+                vals = struct.unpack("<%dd" % (len(data) // 8), data)
+            elif typ == "Int64":
+                vals = struct.unpack("<%dq" % (len(data) // 8), data)
+            else:
+                vals = data
+            body[name] = ("format=\"ascii\"", " ".join(str(v) for v in vals))
+        elif fmt == "binary":
+            body[name] = ("format=\"binary\"", base64.b64encode(struct.pack(hfmt, len(data)) + data).decode())
+        else:
+            blob = struct.pack(hfmt, len(data)) + data
+            off = len(app)
+            app += base64.b64encode(blob) if appended == "base64" else blob
+            body[name] = ("format=\"appended\" offset=\"%d\"" % off, "")
+
+    def da(name, typ, nc):
+        f, txt = body[name]
+        n = (" Name=\"%s\"" % name) if name else ""
+        return "<DataArray type=\"%s\"%s NumberOfComponents=\"%d\" %s>%s</DataArray>\n" % (typ, n, nc, f, txt)
+
+    s = ("<?xml version=\"1.0\"?>\n<!-- comment -->\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+         "byte_order=\"LittleEndian\" header_type=\"%s\">\n<UnstructuredGrid>\n"
+         "<Piece NumberOfPoints=\"5\" NumberOfCells='2'>\n<PointData Scalars=\"temp\">\n" % header)
+    s += da("temp", "Float64", 1) + "</PointData>\n<Points>\n" + da("", "Float64", 3) + "</Points>\n<Cells>\n"
+    s += da("connectivity", "Int64", 1) + da("offsets", "Int64", 1) + da("types", "UInt8", 1)
+    s += "</Cells>\n</Piece>\n</UnstructuredGrid>\n"
+    b = s.encode()
+    if fmt == "appended":
+        b += ("<AppendedData encoding=\"%s\">\n_" % appended).encode() + app + b"\n</AppendedData>\n"
+    return b + b"</VTKFile>\n"
+
+
+put("vtu", "ascii.vtu", vtu("ascii"))
+put("vtu", "bin32.vtu", vtu("binary", "UInt32"))
+put("vtu", "bin64.vtu", vtu("binary", "UInt64"))
+put("vtu", "raw.vtu", vtu("appended", "UInt64", "raw"))
+put("vtu", "b64.vtu", vtu("appended", "UInt32", "base64"))
+put("vtu", "cdata.vtu", "<?xml version='1.0'?><VTKFile type='UnstructuredGrid' byte_order='BigEndian'>"
+    "<UnstructuredGrid><Piece NumberOfPoints='4' NumberOfCells='1'><Points>"
+    "<DataArray type='Float32' NumberOfComponents='3' format='ascii'><![CDATA[0 0 0 1 0 0 0 1 0 0 0 1]]>"
+    "</DataArray></Points><Cells><DataArray type='Int32' Name='connectivity' format='ascii'>0 1 2 3</DataArray>"
+    "<DataArray type='Int32' Name='offsets' format='ascii'>4</DataArray>"
+    "<DataArray type='Int32' Name='types' format='ascii'>10</DataArray></Cells></Piece></UnstructuredGrid>"
+    "</VTKFile>")
+
+# ---- .off / .ts tetrahedral
+put("tet_off", "a.off", "OFF\n# comment\n5 2\n0 0 0 0.5\n1 0 0 1\n0 1 0 2\n0 0 1 3\n1 1 1 4\n0 1 2 3\n1 2 3 4\n")
+put("tet_off", "b.ts", "5\n2\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n\n4 0 1 2 3\n4 1 2 3 4\n# trailing\n")
+put("tet_off", "c.off", "5 2\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n0 1 2 3\n1 2 3 4\n")

@@ -1,0 +1,116 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+//
+// Replays the inputs kept from fuzzing (fuzz/, one libFuzzer target per reader): every file of
+// fuzz_regressions/<reader>/ is read with the stream form of that reader, exactly as the fuzz
+// target does (tetgen: the .node text, a NUL byte, the .ele text), and must either succeed or
+// throw CGAL::PR_star_octree::IO::Read_error, within a time limit; a mesh that was read is then
+// given to PR_star_octree_3 (k_v = 4), which may only throw std::invalid_argument.  Crashes and
+// memory errors are caught by running this test under the sanitizers (scripts/test_sanitizers.sh).
+//
+// Usage: test_fuzz_regressions [generated_data_dir (unused)] [shared_data_dir (unused)]
+//        The folder is PRSTAR_FUZZ_REGRESSIONS (compile definition), or $PRSTAR_FUZZ_REGRESSIONS.
+
+#include <CGAL/PR_star_octree.h>
+#include <CGAL/PR_star_octree/IO.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#ifndef PRSTAR_FUZZ_REGRESSIONS
+#define PRSTAR_FUZZ_REGRESSIONS "fuzz_regressions"
+#endif
+
+namespace IO = CGAL::PR_star_octree::IO;
+using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
+namespace fs = std::filesystem;
+
+// Wall-clock limit for one file (read + octree), far above what the files need (milliseconds)
+// even under ASan/UBSan on a loaded machine.
+static constexpr double seconds_per_file = 20.0;
+
+static void read_tetgen_split(std::istream& in, Mesh& m, const std::string& name) {
+  const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t nul = all.find('\0');
+  std::istringstream node(all.substr(0, nul));
+  std::istringstream ele(nul == std::string::npos ? std::string() : all.substr(nul + 1));
+  IO::read_tetgen(node, ele, m, name + " (node)", name + " (ele)");
+}
+
+int main() {
+  const char* env = std::getenv("PRSTAR_FUZZ_REGRESSIONS");
+  const fs::path root = env ? env : PRSTAR_FUZZ_REGRESSIONS;
+  using Reader = std::function<void(std::istream&, Mesh&, const std::string&)>;
+  const std::map<std::string, Reader> readers = {
+      {"medit", [](std::istream& in, Mesh& m, const std::string& n) { IO::read_medit(in, m, n); }},
+      {"tetgen", read_tetgen_split},
+      {"vtk", [](std::istream& in, Mesh& m, const std::string& n) { IO::read_vtk(in, m, n); }},
+      {"vtu", [](std::istream& in, Mesh& m, const std::string& n) { IO::read_vtu(in, m, n); }},
+      {"tet_off", [](std::istream& in, Mesh& m, const std::string& n) { IO::read_tet_off(in, m, n); }}};
+
+  if (!fs::is_directory(root)) {
+    std::cerr << "test_fuzz_regressions: " << root << " is not a folder" << std::endl;
+    return 1;
+  }
+  int files = 0, failures = 0, read_ok = 0;
+  for (const auto& r : readers) {
+    const fs::path dir = root / r.first;
+    if (!fs::is_directory(dir)) continue;
+    std::vector<fs::path> paths;
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.is_regular_file()) paths.push_back(e.path());
+    std::sort(paths.begin(), paths.end());
+    for (const fs::path& p : paths) {
+      ++files;
+      const std::string name = p.string();
+      const auto start = std::chrono::steady_clock::now();
+      std::ifstream in(p, std::ios::binary);
+      Mesh mesh;
+      bool ok = true;
+      try {
+        r.second(in, mesh, name);
+        ++read_ok;
+        try {
+          CGAL::PR_star_octree_3<> tree(CGAL::PR_star_octree::make_input(mesh), 4);
+          (void)tree.number_of_vertices();
+        } catch (const std::invalid_argument&) {
+        }
+      } catch (const IO::Read_error& e) {
+        if (std::string(e.what()).find(name) == std::string::npos) {
+          std::cerr << name << ": the message does not name the input: " << e.what() << std::endl;
+          ok = false;
+        }
+      } catch (const std::exception& e) {
+        std::cerr << name << ": unexpected exception (not Read_error): " << e.what() << std::endl;
+        ok = false;
+      }
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (s > seconds_per_file) {
+        std::cerr << name << ": took " << s << " s (limit " << seconds_per_file << " s)" << std::endl;
+        ok = false;
+      }
+      if (!ok) ++failures;
+    }
+  }
+  std::cout << "test_fuzz_regressions: " << files << " files (" << read_ok << " read, " << files - read_ok
+            << " rejected), " << failures << " failures" << std::endl;
+  if (files == 0) {
+    std::cerr << "test_fuzz_regressions: no file under " << root << std::endl;
+    return 1;
+  }
+  return failures == 0 ? 0 : 1;
+}
