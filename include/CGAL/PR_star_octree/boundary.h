@@ -75,6 +75,10 @@ class Vertex_classifier {
 public:
   using Index = typename Octree::Index;
 
+  /// `check_links = false` gives the paper's test alone (2|e| != 3|t|, and a triangle in three or
+  /// more tetrahedra): faster, but it trusts the mesh to be manifold at the vertex.
+  explicit Vertex_classifier(bool check_links = true) : check_links_(check_links) {}
+
   /// classifies vertex `v` of the leaf of `local` (VT must have been built)
   Vertex_type classify(const Leaf_topology<Octree>& local, Index v) {
     const auto star = local.vertex_tetrahedra(v);
@@ -82,7 +86,7 @@ public:
     const auto* T = local.octree().tetrahedra().data();
     // The link: vertices (local ids by a small hash map) and edges with their multiplicities.
     // For each tetrahedron (v, a, b, c), the link triangle (a, b, c) has the edges (a,b), (b,c), (a,c).
-    vertex_ids_.reset(3 * star.size());
+    if (check_links_) vertex_ids_.reset(3 * star.size());
     edge_ids_.reset(3 * star.size());
     link_edges_.clear();
     std::uint32_t nv = 0;
@@ -92,11 +96,9 @@ public:
       int n = 0;
       for (int k = 0; k < 4; ++k)
         if (c[k] != v) o[n++] = c[k];
-      std::uint32_t id[3];
-      for (int i = 0; i < 3; ++i) {
-        std::uint32_t& slot = vertex_ids_.find_or_insert(o[i], nv);
-        id[i] = slot;
-      }
+      std::uint32_t id[3] = {0, 0, 0};
+      if (check_links_)
+        for (int i = 0; i < 3; ++i) id[i] = vertex_ids_.find_or_insert(o[i], nv);
       const int pairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
       for (const auto& p : pairs) {
         const std::uint64_t a = o[p[0]], b = o[p[1]];
@@ -111,7 +113,8 @@ public:
     for (const Link_edge& e : link_edges_) boundary_edges += (e.count == 1);
     const std::size_t distinct = link_edges_.size();
     const bool euler_boundary = 2 * distinct != 3 * star.size(); // the paper's test
-    if (!is_disc_or_sphere(nv, boundary_edges, distinct, star.size())) return Vertex_type::NONMANIFOLD;
+    if (check_links_ && !is_disc_or_sphere(nv, boundary_edges, distinct, star.size()))
+      return Vertex_type::NONMANIFOLD;
     return euler_boundary ? Vertex_type::BOUNDARY : Vertex_type::INTERIOR;
   }
 
@@ -186,6 +189,7 @@ private:
     return loops == 1;
   }
 
+  bool check_links_;
   Small_map vertex_ids_, edge_ids_;
   std::vector<Link_edge> link_edges_;
   std::vector<unsigned char> boundary_degree_;
@@ -214,15 +218,17 @@ struct Boundary_result {
 /// \ingroup PkgPRStarOctreeRef
 /// Computes the boundary of the mesh of `tree` by streaming over its leaves: the type of every
 /// vertex, the boundary triangles (each reported once, by the leaf owning its smallest vertex)
-/// and the number of tetrahedra touching the boundary.
+/// and the number of tetrahedra touching the boundary.  With `check_links = false`, vertices are
+/// classified by the paper's count alone (see `Vertex_classifier`).
 template <class Octree>
-Boundary_result<Octree> compute_boundary(const Octree& tree, bool with_triangles = true) {
+Boundary_result<Octree> compute_boundary(const Octree& tree, bool with_triangles = true,
+                                         bool check_links = true) {
   using Index = typename Octree::Index;
   Boundary_result<Octree> r;
   if (tree.number_of_vertices() > 0xffffffffu)
     throw std::invalid_argument("compute_boundary: more than 2^32 vertices are not supported");
   r.vertex_type.assign(tree.number_of_vertices(), Vertex_type::UNREFERENCED);
-  Vertex_classifier<Octree> classifier;
+  Vertex_classifier<Octree> classifier(check_links);
   const unsigned relations = VERTEX_TETRAHEDRA | (with_triangles ? TRIANGLES : 0u);
   for_each_leaf(tree, relations, [&](const Leaf_topology<Octree>& local) {
     for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v)
