@@ -11,6 +11,8 @@
 #include <CGAL/PR_star_octree/IO.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include "test_harness.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -19,28 +21,13 @@
 #include <random>
 #include <set>
 #include <string>
-#include <sys/stat.h>
 #include <vector>
 
 namespace {
 
-int failures = 0;
-#define CHECK(cond)                                                                                          \
-  do {                                                                                                       \
-    if (!(cond)) {                                                                                           \
-      ++failures;                                                                                            \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": CHECK failed: " #cond << std::endl;                     \
-    }                                                                                                        \
-  } while (0)
-
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
 using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
-
-bool exists(const std::string& f) {
-  struct stat st;
-  return ::stat(f.c_str(), &st) == 0;
-}
 
 // Half-open containment of a point in a box, closed on the root's upper faces.
 template <class P>
@@ -61,7 +48,7 @@ std::map<std::vector<double>, std::set<std::size_t>> check_invariants(const Tree
                                                                       const std::string& what) {
   using Index = typename Tree::Index;
   const std::size_t nv = input.number_of_vertices(), nt = input.number_of_tetrahedra();
-  const int before = failures;
+  const prstar_test::Failure_context context(what);
   CHECK(tree.number_of_vertices() == nv);
   CHECK(tree.number_of_tetrahedra() == nt);
 
@@ -183,8 +170,6 @@ std::map<std::vector<double>, std::set<std::size_t>> check_invariants(const Tree
   CHECK(nt == 0 || (s.chi >= 1.0 && s.chi <= 4.0));
   CHECK(s.nodes == tree.number_of_nodes() && s.leaves == tree.number_of_leaves());
   CHECK((s.nodes - 1) % 8 == 0);
-
-  if (failures != before) std::cerr << "  ... while checking " << what << std::endl;
 
   std::map<std::vector<double>, std::set<std::size_t>> shape;
   for (std::size_t l = 0; l < boxes.size(); ++l) {
@@ -323,33 +308,22 @@ void test_duplicates_and_depth() {
 
 void test_errors() {
   std::vector<Point> pts = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  auto expect_throw = [](auto&& f, const std::string& fragment) {
-    try {
-      f();
-      CHECK(!"expected an exception");
-    } catch (const std::invalid_argument& e) {
-      if (std::string(e.what()).find(fragment) == std::string::npos) {
-        std::cerr << "message '" << e.what() << "' lacks '" << fragment << "'\n";
-        CHECK(false);
-      }
-    }
-  };
+  using Tree = CGAL::PR_star_octree_3<>;
   std::vector<std::array<int, 4>> out_of_range = {{0, 1, 2, 4}};
-  expect_throw([&] { CGAL::PR_star_octree_3<> t(CGAL::PR_star_octree::make_input(pts, out_of_range)); },
-               "tetrahedron 0 has vertex index 4 out of range");
+  CHECK_THROWS(std::invalid_argument, "tetrahedron 0 has vertex index 4 out of range",
+               (void)Tree(CGAL::PR_star_octree::make_input(pts, out_of_range)));
   std::vector<std::array<int, 4>> negative = {{0, 1, -2, 3}};
-  expect_throw([&] { CGAL::PR_star_octree_3<> t(CGAL::PR_star_octree::make_input(pts, negative)); },
-               "has vertex index -2 out of range");
+  CHECK_THROWS(std::invalid_argument, "has vertex index -2 out of range",
+               (void)Tree(CGAL::PR_star_octree::make_input(pts, negative)));
   std::vector<std::array<int, 4>> twice = {{0, 1, 2, 3}, {0, 1, 1, 3}};
-  expect_throw([&] { CGAL::PR_star_octree_3<> t(CGAL::PR_star_octree::make_input(pts, twice)); },
-               "tetrahedron 1 lists vertex 1 twice");
+  CHECK_THROWS(std::invalid_argument, "tetrahedron 1 lists vertex 1 twice",
+               (void)Tree(CGAL::PR_star_octree::make_input(pts, twice)));
   std::vector<std::array<int, 4>> ok = {{0, 1, 2, 3}};
-  expect_throw([&] { CGAL::PR_star_octree_3<> t(CGAL::PR_star_octree::make_input(pts, ok), 0); },
-               "at least 1");
+  CHECK_THROWS(std::invalid_argument, "at least 1", (void)Tree(CGAL::PR_star_octree::make_input(pts, ok), 0));
   std::vector<Point> bad = pts;
   bad[2] = Point(0, std::nan(""), 0);
-  expect_throw([&] { CGAL::PR_star_octree_3<> t(CGAL::PR_star_octree::make_input(bad, ok)); },
-               "vertex 2 has a non-finite coordinate");
+  CHECK_THROWS(std::invalid_argument, "vertex 2 has a non-finite coordinate",
+               (void)Tree(CGAL::PR_star_octree::make_input(bad, ok)));
 }
 
 // Another traits class (a plain Cartesian kernel) and 64-bit indices, with a scalar field.
@@ -393,8 +367,7 @@ void test_table1_behaviour(const Mesh& mesh, const std::string& what) {
 } // namespace
 
 int main(int argc, char** argv) {
-  const std::string generated = argc > 1 ? argv[1] : "";
-  const std::string shared = argc > 2 ? argv[2] : "";
+  const prstar_test::Data_folders data(argc, argv);
 
   test_hand_checked();
   test_duplicates_and_depth();
@@ -402,48 +375,35 @@ int main(int argc, char** argv) {
   test_other_traits();
 
   // Generated meshes (CGAL Mesh_3 and TetGen, made by the test fixture).
-  std::size_t generated_read = 0;
   for (const char* name :
        {"sphere.mesh", "torus.mesh", "cube.mesh", "sphere_tetgen.mesh", "cube_tetgen.vtu"}) {
-    const std::string file = generated + "/" + name;
-    if (!exists(file)) {
-      std::cerr << "missing generated input " << file << "\n";
-      CHECK(false);
-      continue;
-    }
+    const auto file = data.generated_file(name);
+    if (!file) continue;
     Mesh mesh;
-    CGAL::PR_star_octree::IO::read_tetrahedral_mesh(file, mesh);
+    CGAL::PR_star_octree::IO::read_tetrahedral_mesh(*file, mesh);
     CHECK(mesh.tetrahedra.size() > 1000);
-    ++generated_read;
     for (std::size_t kv : {std::size_t(1), std::size_t(7), std::size_t(50), std::size_t(400)})
       check_shuffle_invariance(mesh, kv, std::string(name) + " k_v=" + std::to_string(kv));
     test_table1_behaviour(mesh, name);
   }
 
   // Real meshes made by others, when present.
-  if (!shared.empty() && exists(shared)) {
+  if (data.report_shared()) {
     for (const char* name : {"spx_zsweep.off", "armadillo_sofa.vtu", "bunny_sofa.vtu", "skull_14k.off",
                              "t13_data.1.node", "part1.1.node"}) {
-      const std::string file = shared + "/" + name;
-      if (!exists(file)) continue;
+      const auto file = data.shared_file(name);
+      if (!file) continue;
       Mesh mesh;
-      CGAL::PR_star_octree::IO::read_tetrahedral_mesh(file, mesh);
+      CGAL::PR_star_octree::IO::read_tetrahedral_mesh(*file, mesh);
       for (std::size_t kv : {std::size_t(3), std::size_t(20), std::size_t(200)})
         check_shuffle_invariance(mesh, kv, std::string(name) + " k_v=" + std::to_string(kv));
       if (std::string(name) == "spx_zsweep.off") {
         CGAL::PR_star_octree_3<> t(CGAL::PR_star_octree::make_input(mesh), 20);
         // The data README: 12,924 of the 12,936 tets are listed with negative orientation.
-        CHECK(t.statistics().reoriented_tetrahedra == 12924);
+        CHECK_EQUAL(t.statistics().reoriented_tetrahedra, std::size_t(12924));
         CHECK(t.has_scalar_field());
       }
     }
-  } else
-    std::cout << "shared data not found: real-mesh checks skipped\n";
-
-  if (failures) {
-    std::cerr << failures << " check(s) failed\n";
-    return 1;
   }
-  std::cout << "test_octree: all checks passed (" << generated_read << " generated meshes)\n";
-  return 0;
+  return prstar_test::summary("test_octree");
 }
