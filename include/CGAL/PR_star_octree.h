@@ -18,6 +18,8 @@
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 #include <CGAL/PR_star_octree/Statistics.h>
 #include <CGAL/PR_star_octree/internal/concept_checks.h>
+#include <CGAL/PR_star_octree/internal/leaf_tetrahedra.h>
+#include <CGAL/PR_star_octree/parameters.h>
 
 #include <algorithm>
 #include <array>
@@ -36,7 +38,8 @@ namespace CGAL {
 
 /// \ingroup PkgPRStarOctreeRef
 ///
-/// The PR-star octree of a tetrahedral mesh (De Floriani, Fellegara, Magillo; paper Section 4).
+/// The PR-star octree of a tetrahedral mesh (Weiss, Fellegara, De Floriani, Velloso, ACM SIGSPATIAL GIS
+/// 2011; paper Section 4).
 ///
 /// It holds three things:
 /// - the vertex array `V` (points, optional scalar), re-indexed by a depth-first walk of the leaves,
@@ -101,91 +104,10 @@ public:
     }
   };
 
-  /// A contiguous read-only range.
-  template <class T>
-  struct Range {
-    const T* first;
-    const T* last;
-    const T* begin() const { return first; }
-    const T* end() const { return last; }
-    std::size_t size() const { return static_cast<std::size_t>(last - first); }
-    bool empty() const { return first == last; }
-    const T& operator[](std::size_t i) const { return first[i]; }
-  };
-
   /// The tetrahedra of a leaf in increasing index order: the listed shared ones, then the owned
-  /// range.  A random-access range of `Index` values.
-  class Leaf_tetrahedra {
-  public:
-    class iterator {
-    public:
-      using iterator_category = std::random_access_iterator_tag;
-      using value_type = Index;
-      using difference_type = std::ptrdiff_t;
-      using pointer = const Index*;
-      using reference = Index;
-      iterator() = default;
-      iterator(const Leaf_tetrahedra* r, std::size_t i) : r_(r), i_(i) {}
-      Index operator*() const { return (*r_)[i_]; }
-      Index operator[](difference_type d) const { return (*r_)[i_ + d]; }
-      iterator& operator++() {
-        ++i_;
-        return *this;
-      }
-      iterator operator++(int) {
-        iterator c = *this;
-        ++i_;
-        return c;
-      }
-      iterator& operator--() {
-        --i_;
-        return *this;
-      }
-      iterator& operator+=(difference_type d) {
-        i_ += d;
-        return *this;
-      }
-      iterator& operator-=(difference_type d) {
-        i_ -= d;
-        return *this;
-      }
-      friend iterator operator+(iterator a, difference_type d) { return a += d; }
-      friend iterator operator-(iterator a, difference_type d) { return a -= d; }
-      friend difference_type operator-(const iterator& a, const iterator& b) {
-        return static_cast<difference_type>(a.i_) - static_cast<difference_type>(b.i_);
-      }
-      friend bool operator==(const iterator& a, const iterator& b) { return a.i_ == b.i_; }
-      friend bool operator!=(const iterator& a, const iterator& b) { return a.i_ != b.i_; }
-      friend bool operator<(const iterator& a, const iterator& b) { return a.i_ < b.i_; }
-
-    private:
-      const Leaf_tetrahedra* r_ = nullptr;
-      std::size_t i_ = 0;
-    };
-
-    Leaf_tetrahedra(const Index* shared, std::size_t n_shared, Index owned_begin, Index owned_end)
-        : shared_(shared), n_shared_(n_shared), owned_begin_(owned_begin),
-          size_(n_shared + (owned_end - owned_begin)) {}
-    std::size_t size() const { return size_; }
-    bool empty() const { return size_ == 0; }
-    Index operator[](std::size_t i) const {
-      return i < n_shared_ ? shared_[i] : static_cast<Index>(owned_begin_ + (i - n_shared_));
-    }
-    iterator begin() const { return iterator(this, 0); }
-    iterator end() const { return iterator(this, size_); }
-    /// the listed (shared) part
-    Range<Index> shared() const { return {shared_, shared_ + n_shared_}; }
-    /// the owned part: the tetrahedra `[first, second)` of `T`
-    std::pair<Index, Index> owned() const {
-      return {owned_begin_, static_cast<Index>(owned_begin_ + (size_ - n_shared_))};
-    }
-
-  private:
-    const Index* shared_;
-    std::size_t n_shared_;
-    Index owned_begin_;
-    std::size_t size_;
-  };
+  /// range (see `Node`).  A random-access range of `Index` values whose iterators stay valid after
+  /// the range object is gone (as long as the octree lives).
+  using Leaf_tetrahedra = PR_star_octree::internal::Leaf_tetrahedra<Index>;
   /// @}
 
   static constexpr Node_index no_node = (std::numeric_limits<Index>::max)();
@@ -209,11 +131,25 @@ public:
   explicit PR_star_octree_3(const InputMesh& input, std::size_t bucket_size = default_bucket_size,
                             std::size_t max_depth = default_max_depth, const Geom_traits& gt = Geom_traits())
       : gt_(gt), bucket_size_(bucket_size), max_depth_(max_depth) {
-    static_assert(PR_star_octree::internal::Check_input_mesh<InputMesh>::value, "");
+    static_assert(PR_star_octree::internal::Check_input_mesh<InputMesh, Point_3>::value, "");
     if (bucket_size_ == 0)
       throw std::invalid_argument("PR_star_octree_3: the bucket size k_v must be at least 1");
     build(input);
   }
+
+  /// Builds the PR-star octree of `input` with named parameters: `bucket_size` (default 50),
+  /// `maximum_depth` (default 32), `geom_traits` (default `Geom_traits()`); see
+  /// `CGAL::PR_star_octree::parameters`.
+  template <class InputMesh, class T, class Tag, class Base>
+  PR_star_octree_3(const InputMesh& input, const CGAL::Named_function_parameters<T, Tag, Base>& np)
+      : PR_star_octree_3(
+            input,
+            parameters::choose_parameter(
+                parameters::get_parameter(np, PR_star_octree::internal_np::bucket_size), default_bucket_size),
+            parameters::choose_parameter(
+                parameters::get_parameter(np, PR_star_octree::internal_np::maximum_depth), default_max_depth),
+            parameters::choose_parameter(parameters::get_parameter(np, internal_np::geom_traits),
+                                         Geom_traits())) {}
   /// @}
 
   /// \name The mesh (new numbering)
@@ -229,6 +165,12 @@ public:
   const std::vector<double>& scalars() const { return scalars_; }
   double scalar(Index v) const { return scalars_[v]; }
   const Geom_traits& geom_traits() const { return gt_; }
+  /// the Cartesian coordinates of `p` as `double`s, through the traits' `Compute_x_3`,
+  /// `Compute_y_3` and `Compute_z_3`
+  std::array<double, 3> coordinates(const Point_3& p) const {
+    return {{CGAL::to_double(gt_.compute_x_3_object()(p)), CGAL::to_double(gt_.compute_y_3_object()(p)),
+             CGAL::to_double(gt_.compute_z_3_object()(p))}};
+  }
   /// @}
 
   /// \name The octree
@@ -342,17 +284,15 @@ public:
 private:
   static double midpoint(double lo, double hi) { return lo + (hi - lo) * 0.5; }
 
+  // An input point as a `Point_3`: converted, or made from its `x()`, `y()`, `z()` by the traits'
+  // `Construct_point_3`.
   template <class P>
-  static std::array<double, 3> coordinates(const P& p) {
-    return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-  }
-
-  template <class P>
-  static Point_3 convert_point(const P& p) {
+  Point_3 convert_point(const P& p) const {
     if constexpr (std::is_convertible<P, Point_3>::value)
       return Point_3(p);
     else
-      return Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      return gt_.construct_point_3_object()(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                            CGAL::to_double(p.z()));
   }
 
   static std::vector<Index> inverse(const std::vector<Index>& perm) {
@@ -390,311 +330,8 @@ private:
   std::vector<std::uint64_t> reoriented_;
 };
 
-// ---------------------------------------------------------------------------------------------
-// Construction
-// ---------------------------------------------------------------------------------------------
-
-template <class GT, class I>
-template <class InputMesh>
-void PR_star_octree_3<GT, I>::build(const InputMesh& input) {
-  const std::size_t nv = input.number_of_vertices();
-  const std::size_t nt = input.number_of_tetrahedra();
-  const std::size_t index_max = static_cast<std::size_t>(no_node) - 1;
-  if (nv > index_max || nt > index_max || 4 * nt > index_max)
-    throw std::invalid_argument("PR_star_octree_3: the mesh (" + std::to_string(nv) + " vertices, " +
-                                std::to_string(nt) + " tetrahedra) does not fit the " +
-                                std::to_string(8 * sizeof(I)) + "-bit index type");
-
-  // 1. Coordinates and bounding cube.
-  std::vector<std::array<double, 3>> xyz(nv);
-  std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
-  for (std::size_t i = 0; i < nv; ++i) {
-    xyz[i] = coordinates(input.point(i));
-    for (int a = 0; a < 3; ++a) {
-      if (!std::isfinite(xyz[i][a]))
-        throw std::invalid_argument("PR_star_octree_3: vertex " + std::to_string(i) +
-                                    " has a non-finite coordinate");
-      if (i == 0 || xyz[i][a] < lo[a]) lo[a] = xyz[i][a];
-      if (i == 0 || xyz[i][a] > hi[a]) hi[a] = xyz[i][a];
-    }
-  }
-  double side = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-  if (!(side > 0)) side = 1.; // empty mesh, a single point or all points coincident
-  for (int a = 0; a < 3; ++a) {
-    root_lo_[a] = lo[a];
-    root_hi_[a] = lo[a] + side;
-    if (root_hi_[a] < hi[a]) root_hi_[a] = hi[a]; // rounding: the cube must contain every point
-  }
-
-  // 2. PR split of the vertices, depth first: `order[new] = original`.
-  std::vector<Index> order(nv);
-  std::iota(order.begin(), order.end(), Index(0));
-  split_vertices(xyz, order);
-  xyz.clear();
-  xyz.shrink_to_fit();
-
-  // 3. Re-indexed vertex array.
-  points_.reserve(nv);
-  for (std::size_t i = 0; i < nv; ++i) points_.push_back(convert_point(input.point(order[i])));
-  if (input.has_scalar_field()) {
-    has_scalar_ = true;
-    scalars_.resize(nv);
-    for (std::size_t i = 0; i < nv; ++i) scalars_[i] = static_cast<double>(input.scalar(order[i]));
-  }
-  vertex_to_original_ = order;
-  std::vector<Index> from_original = inverse(order);
-
-  // 4. Re-indexed, oriented tetrahedra and the leaf lists.
-  build_tetrahedra(input, from_original);
-  build_leaf_lists();
-}
-
-template <class GT, class I>
-void PR_star_octree_3<GT, I>::split_vertices(const std::vector<std::array<double, 3>>& xyz,
-                                             std::vector<Index>& order) {
-  struct Item {
-    Node_index node;
-    std::array<double, 3> lo, hi;
-    std::size_t depth;
-  };
-  const std::size_t nv = order.size();
-  nodes_.clear();
-  leaves_.clear();
-  nodes_.push_back(Node{0, static_cast<Index>(nv), 0, 0, 0, 0, no_node, no_node});
-  std::vector<Item> stack{Item{0, root_lo_, root_hi_, 0}};
-  std::vector<Index> buffer;
-  std::vector<unsigned char> code;
-
-  while (!stack.empty()) {
-    const Item item = stack.back();
-    stack.pop_back();
-    const Index b = nodes_[item.node].vertex_begin, e = nodes_[item.node].vertex_end;
-    const std::size_t count = e - b;
-    bool split = count > bucket_size_;
-    if (split && item.depth >= max_depth_) {
-      split = false;
-      ++depth_limited_leaves_;
-    }
-    if (split) { // points that all coincide can never be separated: stop and report
-      const std::array<double, 3>& p0 = xyz[order[b]];
-      bool all_same = true;
-      for (Index i = b + 1; i < e && all_same; ++i) all_same = (xyz[order[i]] == p0);
-      if (all_same) {
-        split = false;
-        ++coincident_leaves_;
-      }
-    }
-    if (!split) {
-      leaves_.push_back(item.node);
-      depth_ = (std::max)(depth_, item.depth);
-      continue;
-    }
-
-    // Stable counting sort of [b, e) by octant: bit a set when coordinate a >= midpoint.
-    std::array<double, 3> mid;
-    for (int a = 0; a < 3; ++a) mid[a] = midpoint(item.lo[a], item.hi[a]);
-    code.resize(count);
-    std::array<std::size_t, 9> start{};
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::array<double, 3>& p = xyz[order[b + i]];
-      const unsigned c =
-          unsigned(p[0] >= mid[0]) | (unsigned(p[1] >= mid[1]) << 1) | (unsigned(p[2] >= mid[2]) << 2);
-      code[i] = static_cast<unsigned char>(c);
-      ++start[c + 1];
-    }
-    for (int c = 0; c < 8; ++c) start[c + 1] += start[c];
-    buffer.resize(count);
-    std::array<std::size_t, 8> pos;
-    std::copy(start.begin(), start.begin() + 8, pos.begin());
-    for (std::size_t i = 0; i < count; ++i) buffer[pos[code[i]]++] = order[b + i];
-    std::copy(buffer.begin(), buffer.end(), order.begin() + b);
-
-    const Node_index first = static_cast<Node_index>(nodes_.size());
-    if (static_cast<std::size_t>(first) + 8 >= static_cast<std::size_t>(no_node))
-      throw std::invalid_argument("PR_star_octree_3: too many octree nodes for the index type");
-    nodes_[item.node].first_child = first;
-    for (unsigned c = 0; c < 8; ++c)
-      nodes_.push_back(Node{static_cast<Index>(b + start[c]), static_cast<Index>(b + start[c + 1]), 0, 0, 0,
-                            0, no_node, item.node});
-    // Push the children in reverse so that child 0 is visited first: leaves come out depth first.
-    for (unsigned c = 8; c-- > 0;) {
-      Item child{static_cast<Node_index>(first + c), item.lo, item.hi, item.depth + 1};
-      for (int a = 0; a < 3; ++a) {
-        if ((c >> a) & 1u)
-          child.lo[a] = mid[a];
-        else
-          child.hi[a] = mid[a];
-      }
-      stack.push_back(child);
-    }
-  }
-}
-
-template <class GT, class I>
-template <class InputMesh>
-void PR_star_octree_3<GT, I>::build_tetrahedra(const InputMesh& input,
-                                               const std::vector<Index>& from_original) {
-  const std::size_t nv = points_.size();
-  const std::size_t nt = input.number_of_tetrahedra();
-
-  // Validate and find the smallest vertex of each tetrahedron in the new numbering (the sort key).
-  // The input is read twice rather than remapped into a temporary copy of T: the peak memory of
-  // the construction stays at one T (ours) plus one index per tetrahedron.
-  auto remap = [&](std::size_t t) {
-    const auto c = input.tetrahedron(t);
-    Tetrahedron r;
-    for (int k = 0; k < 4; ++k) {
-      const auto v = c[k];
-      if (!(v >= 0) || static_cast<std::size_t>(v) >= nv)
-        throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
-                                    " has vertex index " + std::to_string(v) + " out of range [0, " +
-                                    std::to_string(nv) + ")");
-      // (the check above also rejects negative indices of a signed index type)
-      r[k] = from_original[static_cast<std::size_t>(v)];
-    }
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        if (r[i] == r[j])
-          throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
-                                      " lists vertex " + std::to_string(c[i]) + " twice");
-    return r;
-  };
-  std::vector<Index> key(nt);
-  for (std::size_t t = 0; t < nt; ++t) {
-    const Tetrahedron r = remap(t);
-    key[t] = *std::min_element(r.begin(), r.end());
-  }
-
-  // Locality: counting sort by smallest vertex (stable, so the result is deterministic).
-  std::vector<Index> start(nv + 1, 0);
-  for (Index k : key) ++start[k + 1];
-  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  tetrahedron_to_original_.assign(nt, 0);
-  for (std::size_t t = 0; t < nt; ++t) tetrahedron_to_original_[start[key[t]]++] = static_cast<Index>(t);
-  std::vector<Index>().swap(key);
-  std::vector<Index>().swap(start);
-
-  // Positive orientation with the exact predicate.
-  tetrahedra_.resize(nt);
-  reoriented_.assign((nt + 63) / 64, 0);
-  auto orientation = gt_.orientation_3_object();
-  for (std::size_t t = 0; t < nt; ++t) {
-    Tetrahedron c = remap(tetrahedron_to_original_[t]);
-    const CGAL::Orientation o = orientation(points_[c[0]], points_[c[1]], points_[c[2]], points_[c[3]]);
-    if (o == CGAL::NEGATIVE) {
-      std::swap(c[2], c[3]);
-      reoriented_[t >> 6] |= std::uint64_t(1) << (t & 63);
-      ++reoriented_count_;
-    } else if (o == CGAL::COPLANAR)
-      ++degenerate_tetrahedra_;
-    tetrahedra_[t] = c;
-  }
-}
-
-template <class GT, class I>
-void PR_star_octree_3<GT, I>::build_leaf_lists() {
-  const std::size_t nv = points_.size();
-  const std::size_t nl = leaves_.size();
-  std::vector<Index> leaf_of(nv); // position of the leaf in `leaves_`
-  for (std::size_t l = 0; l < nl; ++l) {
-    const Node& nd = nodes_[leaves_[l]];
-    std::fill(leaf_of.begin() + nd.vertex_begin, leaf_of.begin() + nd.vertex_end, static_cast<Index>(l));
-  }
-  // The distinct leaves of a tetrahedron, in increasing order.
-  auto distinct_leaves = [&](const Tetrahedron& c, std::array<Index, 4>& out) {
-    std::array<Index, 4> l{{leaf_of[c[0]], leaf_of[c[1]], leaf_of[c[2]], leaf_of[c[3]]}};
-    std::sort(l.begin(), l.end());
-    int k = 0;
-    for (int i = 0; i < 4; ++i)
-      if (i == 0 || l[i] != l[i - 1]) out[k++] = l[i];
-    return k;
-  };
-  // The owner of a tetrahedron is the leaf of its smallest vertex, i.e. its first distinct leaf:
-  // as T is sorted by smallest vertex, each leaf owns a contiguous range of T.  The other leaves
-  // list it explicitly.
-  std::vector<std::size_t> owned(nl + 1, 0), shared(nl + 1, 0);
-  std::array<Index, 4> ls;
-  for (const Tetrahedron& c : tetrahedra_) {
-    const int k = distinct_leaves(c, ls);
-    ++owned[ls[0] + 1];
-    for (int i = 1; i < k; ++i) ++shared[ls[i] + 1];
-  }
-  for (std::size_t l = 0; l < nl; ++l) {
-    owned[l + 1] += owned[l];
-    shared[l + 1] += shared[l];
-  }
-  if (shared[nl] >= static_cast<std::size_t>(no_node))
-    throw std::invalid_argument("PR_star_octree_3: the leaf lists do not fit the index type");
-  leaf_tetrahedra_.assign(shared[nl], 0);
-  for (std::size_t l = 0; l < nl; ++l) {
-    Node& nd = nodes_[leaves_[l]];
-    nd.owned_begin = static_cast<Index>(owned[l]);
-    nd.owned_end = static_cast<Index>(owned[l + 1]);
-    nd.shared_begin = static_cast<Index>(shared[l]);
-    nd.shared_end = static_cast<Index>(shared[l + 1]);
-  }
-  for (std::size_t t = 0; t < tetrahedra_.size(); ++t) {
-    const int k = distinct_leaves(tetrahedra_[t], ls);
-    CGAL_assertion(t >= nodes_[leaves_[ls[0]]].owned_begin && t < nodes_[leaves_[ls[0]]].owned_end);
-    for (int i = 1; i < k; ++i) leaf_tetrahedra_[shared[ls[i]]++] = static_cast<Index>(t);
-  }
-}
-
-// ---------------------------------------------------------------------------------------------
-// Statistics
-// ---------------------------------------------------------------------------------------------
-
-template <class GT, class I>
-typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics() const {
-  Statistics s;
-  s.vertices = points_.size();
-  s.tetrahedra = tetrahedra_.size();
-  s.bucket_size = bucket_size_;
-  s.infinite_bucket_size = (bucket_size_ == infinite_bucket_size);
-  s.max_depth = max_depth_;
-  s.nodes = nodes_.size();
-  s.leaves = leaves_.size();
-  s.depth = depth_;
-  s.depth_limited_leaves = depth_limited_leaves_;
-  s.coincident_leaves = coincident_leaves_;
-  s.reoriented_tetrahedra = reoriented_count_;
-  s.degenerate_tetrahedra = degenerate_tetrahedra_;
-  s.leaf_tetrahedra_entries = leaf_tetrahedra_.size() + tetrahedra_.size();
-  for (Node_index n : leaves_) {
-    const Node& nd = nodes_[n];
-    if (nd.vertex_begin == nd.vertex_end) ++s.empty_leaves;
-    s.max_leaf_vertices = (std::max)(s.max_leaf_vertices, nd.number_of_vertices());
-    s.max_leaf_tetrahedra = (std::max)(s.max_leaf_tetrahedra, nd.number_of_tetrahedra());
-  }
-
-  // Unreferenced and duplicate vertices (coincident points always share a leaf).
-  std::vector<bool> referenced(points_.size(), false);
-  for (const Tetrahedron& c : tetrahedra_)
-    for (Index v : c) referenced[v] = true;
-  s.unreferenced_vertices = static_cast<std::size_t>(std::count(referenced.begin(), referenced.end(), false));
-  std::vector<std::array<double, 3>> xyz;
-  for (Node_index n : leaves_) {
-    const Node& nd = nodes_[n];
-    xyz.clear();
-    for (Index v = nd.vertex_begin; v < nd.vertex_end; ++v) xyz.push_back(coordinates(points_[v]));
-    std::sort(xyz.begin(), xyz.end());
-    for (std::size_t i = 1; i < xyz.size(); ++i)
-      if (xyz[i] == xyz[i - 1]) ++s.duplicate_vertices;
-  }
-
-  s.compute_cost_model();
-
-  s.bytes.points = points_.capacity() * sizeof(Point_3);
-  s.bytes.scalars = scalars_.capacity() * sizeof(double);
-  s.bytes.tetrahedra = tetrahedra_.capacity() * sizeof(Tetrahedron);
-  s.bytes.nodes = nodes_.capacity() * sizeof(Node) + leaves_.capacity() * sizeof(Node_index);
-  s.bytes.leaf_tetrahedra = leaf_tetrahedra_.capacity() * sizeof(Index);
-  s.bytes.permutations =
-      (vertex_to_original_.capacity() + tetrahedron_to_original_.capacity()) * sizeof(Index) +
-      reoriented_.capacity() * sizeof(std::uint64_t);
-  return s;
-}
-
 } // namespace CGAL
+
+#include <CGAL/PR_star_octree/internal/PR_star_octree_3_impl.h>
 
 #endif // CGAL_PR_STAR_OCTREE_H

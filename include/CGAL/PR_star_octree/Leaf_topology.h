@@ -11,6 +11,9 @@
 /// leaf's vertex range and tetrahedron list only, and the streaming visitor over all leaves.
 
 #include <CGAL/PR_star_octree.h>
+#include <CGAL/PR_star_octree/internal/local_complex.h>
+#include <CGAL/PR_star_octree/parameters.h>
+#include <CGAL/Iterator_range.h>
 
 #include <algorithm>
 #include <array>
@@ -54,8 +57,8 @@ public:
   using Index = typename Octree::Index;
   using Node_index = typename Octree::Node_index;
   using Tetrahedron = typename Octree::Tetrahedron;
-  template <class T>
-  using Range = typename Octree::template Range<T>;
+  /// a contiguous read-only range of indices (valid until the next `build()`)
+  using Index_range = CGAL::Iterator_range<const Index*>;
 
   /// adjacency across a face with a single tetrahedron (on the boundary of the mesh)
   static constexpr Index no_neighbor = (std::numeric_limits<Index>::max)();
@@ -89,7 +92,7 @@ public:
   /// \name Vertex-tetrahedra (VT)
   /// @{
   /// the tetrahedra incident in `v` (a vertex of the leaf), in increasing index order
-  Range<Index> vertex_tetrahedra(Index v) const { return csr(vt_offsets_, vt_, v - vb_); }
+  Index_range vertex_tetrahedra(Index v) const { return csr(vt_offsets_, vt_, v - vb_); }
   /// @}
 
   /// \name Tetrahedron-tetrahedra (TT)
@@ -103,7 +106,7 @@ public:
   /// \name Vertex-vertices (VV)
   /// @{
   /// the vertices adjacent to `v` (a vertex of the leaf), in increasing order
-  Range<Index> vertex_vertices(Index v) const { return csr(vv_offsets_, vv_, v - vb_); }
+  Index_range vertex_vertices(Index v) const { return csr(vv_offsets_, vv_, v - vb_); }
   /// @}
 
   /// \name Edges
@@ -115,16 +118,16 @@ public:
   bool owns_edge(std::size_t e) const { return is_local_vertex(edges_[e].v0); }
   /// the star of edge `e`: its tetrahedra in cyclic order around it (right-hand rule around
   /// `v0 -> v1`); for a boundary edge the fan runs from one boundary face to the other
-  Range<Index> edge_tetrahedra(std::size_t e) const { return csr(et_offsets_, et_, e); }
+  Index_range edge_tetrahedra(std::size_t e) const { return csr(et_offsets_, et_, e); }
   /// the link of edge `e`: the vertices opposite it, in the same cyclic order (one more vertex than
   /// tetrahedra when the edge is on the boundary)
-  Range<Index> edge_link(std::size_t e) const { return csr(el_offsets_, el_, e); }
+  Index_range edge_link(std::size_t e) const { return csr(el_offsets_, el_, e); }
   /// whether the star of edge `e` is an open fan (the edge is on the boundary of the mesh)
   bool is_boundary_edge(std::size_t e) const { return edge_flags_[e] & boundary_flag; }
   /// whether the star of edge `e` is neither a closed cycle nor an open fan (non-manifold)
   bool is_nonmanifold_edge(std::size_t e) const { return edge_flags_[e] & nonmanifold_flag; }
   /// the edges incident in `v` (a vertex of the leaf), as edge ids
-  Range<Index> vertex_edges(Index v) const { return csr(vedge_offsets_, vedge_, v - vb_); }
+  Index_range vertex_edges(Index v) const { return csr(vedge_offsets_, vedge_, v - vb_); }
   /// @}
 
   /// \name Triangles
@@ -134,7 +137,7 @@ public:
   const std::array<Index, 3>& triangle(std::size_t f) const { return triangles_[f]; }
   bool owns_triangle(std::size_t f) const { return is_local_vertex(triangles_[f][0]); }
   /// the tetrahedra incident in triangle `f`: one on the boundary, two inside, more if non-manifold
-  Range<Index> triangle_tetrahedra(std::size_t f) const { return csr(ft_offsets_, ft_, f); }
+  Index_range triangle_tetrahedra(std::size_t f) const { return csr(ft_offsets_, ft_, f); }
   /// @}
 
   /// \name Links (computed on demand from VT)
@@ -145,10 +148,9 @@ public:
   OutputIterator vertex_link(Index v, OutputIterator out) const {
     for (Index t : vertex_tetrahedra(v)) {
       const Tetrahedron& c = tree_->tetrahedron(t);
-      const int k = position(c, v);
-      // (c0,c1,c2,c3) is positive; each row is an even permutation putting c[k] first.
-      static const int opposite[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-      *out++ = std::array<Index, 3>{{c[opposite[k][0]], c[opposite[k][1]], c[opposite[k][2]]}};
+      const int k = internal::position(c, v);
+      const auto& f = internal::link_face[k];
+      *out++ = std::array<Index, 3>{{c[f[0]], c[f[1]], c[f[2]]}};
     }
     return out;
   }
@@ -161,32 +163,20 @@ public:
     };
     return b(vt_offsets_) + b(vt_) + b(tt_) + b(vv_offsets_) + b(vv_) + b(edges_) + b(edge_flags_) +
            b(et_offsets_) + b(et_) + b(el_offsets_) + b(el_) + b(vedge_offsets_) + b(vedge_) + b(triangles_) +
-           b(ft_offsets_) + b(ft_) + b(face_records_) + b(edge_records_) + b(scratch_) + b(visited_);
+           b(ft_offsets_) + b(ft_) + faces_.capacity_bytes() + b(edge_records_) + b(scratch_) + b(star_);
   }
 
 private:
   static constexpr unsigned char boundary_flag = 1, nonmanifold_flag = 2;
 
-  static Range<Index> csr(const std::vector<Index>& offsets, const std::vector<Index>& data, std::size_t i) {
-    return {data.data() + offsets[i], data.data() + offsets[i + 1]};
-  }
-  static int position(const Tetrahedron& c, Index v) {
-    for (int k = 0; k < 4; ++k)
-      if (c[k] == v) return k;
-    return -1;
+  static Index_range csr(const std::vector<Index>& offsets, const std::vector<Index>& data, std::size_t i) {
+    return Index_range(data.data() + offsets[i], data.data() + offsets[i + 1]);
   }
 
-  void build_vt();
   void build_faces(bool adjacency, bool triangles);
   void build_vv();
   void build_edges();
 
-  struct Face_record {
-    std::array<Index, 3> v;
-    Index local;
-    int k;
-    bool operator<(const Face_record& o) const { return std::tie(v, local) < std::tie(o.v, o.local); }
-  };
   struct Edge_record {
     Index a, b, t;
     bool operator<(const Edge_record& o) const { return std::tie(a, b, t) < std::tie(o.a, o.b, o.t); }
@@ -205,10 +195,10 @@ private:
   std::vector<Index> et_offsets_, et_, el_offsets_, el_, vedge_offsets_, vedge_;
   std::vector<std::array<Index, 3>> triangles_;
   std::vector<Index> ft_offsets_, ft_;
-  std::vector<Face_record> face_records_;
+  internal::Face_pairing<Index> faces_;
+  internal::Edge_fan<Index> fan_;
   std::vector<Edge_record> edge_records_;
-  std::vector<Index> scratch_;
-  std::vector<unsigned char> visited_;
+  std::vector<Index> scratch_, star_;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -222,102 +212,47 @@ void Leaf_topology<Octree>::build(const Octree& tree, Node_index leaf, unsigned 
   // Dependencies: VV and edges are built from VT.
   if (relations & (VERTEX_VERTICES | EDGES)) relations |= VERTEX_TETRAHEDRA;
   relations_ = relations;
-  if (relations & VERTEX_TETRAHEDRA) build_vt();
+  if (relations & VERTEX_TETRAHEDRA) {
+    const auto tets = tetrahedra();
+    internal::build_leaf_vertex_tetrahedra(tree_->tetrahedra().data(), tets.shared(), tets.owned(), vb_,
+                                           ve_ - vb_, vt_offsets_, vt_, scratch_);
+  }
   if (relations & (TETRAHEDRON_ADJACENCY | TRIANGLES))
     build_faces(relations & TETRAHEDRON_ADJACENCY, relations & TRIANGLES);
   if (relations & VERTEX_VERTICES) build_vv();
   if (relations & EDGES) build_edges();
 }
 
-// Algorithm 1: one pass over the leaf's tetrahedra, counting then filling (CSR).
-template <class Octree>
-void Leaf_topology<Octree>::build_vt() {
-  const std::size_t nv = ve_ - vb_;
-  const auto tets = tetrahedra();
-  const auto shared = tets.shared();
-  const auto owned = tets.owned();
-  const Tetrahedron* T = tree_->tetrahedra().data();
-  const Index vb = vb_;
-  // Count, then fill (CSR), without branches: a vertex outside the leaf goes to the dummy slot
-  // `nv` (counted in `vt_offsets_[nv + 1]`, written past the end of the real data).  Shared
-  // tetrahedra come from the leaf's list, owned ones are the contiguous range `owned` of T.
-  vt_offsets_.assign(nv + 2, 0);
-  Index* count = vt_offsets_.data() + 1;
-  auto slot = [&](Index v) {
-    const std::size_t d = static_cast<Index>(v - vb); // wraps around for v < vb
-    return d < nv ? d : nv;
-  };
-  auto add = [&](Index t) {
-    const Tetrahedron& c = T[t];
-    ++count[slot(c[0])];
-    ++count[slot(c[1])];
-    ++count[slot(c[2])];
-    ++count[slot(c[3])];
-  };
-  for (Index t : shared) add(t);
-  for (Index t = owned.first; t < owned.second; ++t) add(t);
-  vt_offsets_[nv + 1] = 0; // the dummy slot writes to one trash position
-  for (std::size_t i = 0; i < nv; ++i) vt_offsets_[i + 1] += vt_offsets_[i];
-  vt_.resize(vt_offsets_[nv] + 1);
-  scratch_.assign(vt_offsets_.begin(), vt_offsets_.end() - 1);
-  scratch_[nv] = vt_offsets_[nv];
-  Index* pos = scratch_.data();
-  Index* out = vt_.data();
-  auto put = [&](Index t) {
-    const Tetrahedron& c = T[t];
-    for (int k = 0; k < 4; ++k) {
-      const std::size_t i = slot(c[k]);
-      out[pos[i]] = t;
-      pos[i] += (i != nv);
-    }
-  };
-  for (Index t : shared) put(t);
-  for (Index t = owned.first; t < owned.second; ++t) put(t);
-  vt_offsets_.resize(nv + 1);
-  vt_.resize(vt_offsets_[nv]);
-}
-
-// Algorithm 2 and the triangles: the faces with a vertex in the leaf, sorted and paired.
+// Algorithm 2 and the triangles: the faces with a vertex in the leaf, paired by the kernel.
 template <class Octree>
 void Leaf_topology<Octree>::build_faces(bool adjacency, bool triangles) {
   const auto tets = tetrahedra();
-  face_records_.clear();
+  faces_.build(tree_->tetrahedra(), tets, [this](const std::array<Index, 3>& f) {
+    return is_local_vertex(f[0]) || is_local_vertex(f[1]) || is_local_vertex(f[2]);
+  });
   if (adjacency)
     tt_.assign(tets.size(), std::array<Index, 4>{
                                 {unknown_neighbor, unknown_neighbor, unknown_neighbor, unknown_neighbor}});
-  for (std::size_t i = 0; i < tets.size(); ++i) {
-    const Tetrahedron& c = tree_->tetrahedron(tets[i]);
-    for (int k = 0; k < 4; ++k) {
-      std::array<Index, 3> f{{c[(k + 1) & 3], c[(k + 2) & 3], c[(k + 3) & 3]}};
-      if (!is_local_vertex(f[0]) && !is_local_vertex(f[1]) && !is_local_vertex(f[2])) continue;
-      std::sort(f.begin(), f.end());
-      face_records_.push_back(Face_record{f, static_cast<Index>(i), k});
-    }
-  }
-  std::sort(face_records_.begin(), face_records_.end());
   if (triangles) {
     triangles_.clear();
     ft_offsets_.assign(1, 0);
     ft_.clear();
   }
-  for (std::size_t a = 0; a < face_records_.size();) {
-    std::size_t b = a + 1;
-    while (b < face_records_.size() && face_records_[b].v == face_records_[a].v) ++b;
+  faces_.for_each_triangle([&](auto a, auto b) {
     if (adjacency) {
       if (b - a == 1)
-        tt_[face_records_[a].local][face_records_[a].k] = no_neighbor;
+        tt_[a->local][a->k] = no_neighbor;
       else if (b - a == 2) {
-        tt_[face_records_[a].local][face_records_[a].k] = tets[face_records_[a + 1].local];
-        tt_[face_records_[a + 1].local][face_records_[a + 1].k] = tets[face_records_[a].local];
+        tt_[a->local][a->k] = tets[(a + 1)->local];
+        tt_[(a + 1)->local][(a + 1)->k] = tets[a->local];
       } // non-manifold faces (3+ tetrahedra) keep unknown_neighbor: see triangle_tetrahedra()
     }
     if (triangles) {
-      triangles_.push_back(face_records_[a].v);
-      for (std::size_t r = a; r < b; ++r) ft_.push_back(tets[face_records_[r].local]);
+      triangles_.push_back(a->v);
+      for (auto r = a; r != b; ++r) ft_.push_back(tets[r->local]);
       ft_offsets_.push_back(static_cast<Index>(ft_.size()));
     }
-    a = b;
-  }
+  });
 }
 
 template <class Octree>
@@ -327,12 +262,7 @@ void Leaf_topology<Octree>::build_vv() {
   vv_.clear();
   for (std::size_t i = 0; i < nv; ++i) {
     const Index v = static_cast<Index>(vb_ + i);
-    const std::size_t start = vv_.size();
-    for (Index t : vertex_tetrahedra(v))
-      for (Index w : tree_->tetrahedron(t))
-        if (w != v) vv_.push_back(w);
-    std::sort(vv_.begin() + start, vv_.end());
-    vv_.erase(std::unique(vv_.begin() + start, vv_.end()), vv_.end());
+    internal::star_neighbors(tree_->tetrahedra(), vertex_tetrahedra(v), v, vv_, vv_.size());
     vv_offsets_.push_back(static_cast<Index>(vv_.size()));
   }
 }
@@ -360,91 +290,21 @@ void Leaf_topology<Octree>::build_edges() {
   et_.clear();
   el_offsets_.assign(1, 0);
   el_.clear();
-  struct Wing {
-    Index t, from, to;
-  };
-  std::vector<Wing> wings;
-  for (std::size_t a = 0; a < edge_records_.size();) {
-    std::size_t b = a + 1;
-    while (b < edge_records_.size() && edge_records_[b].a == edge_records_[a].a &&
-           edge_records_[b].b == edge_records_[a].b)
-      ++b;
-    const Index v0 = edge_records_[a].a, v1 = edge_records_[a].b;
-    // Each tetrahedron of the star is a directed edge of the link polygon, from wing to wing,
-    // oriented by the right-hand rule around v0 -> v1: (v0, v1, from, to) is positive.
-    wings.clear();
-    for (std::size_t r = a; r < b; ++r) {
-      const Tetrahedron& c = tree_->tetrahedron(edge_records_[r].t);
-      const int p0 = position(c, v0), p1 = position(c, v1);
-      Index w[2];
-      int pw[2], n = 0;
-      for (int k = 0; k < 4; ++k)
-        if (k != p0 && k != p1) {
-          w[n] = c[k];
-          pw[n++] = k;
-        }
-      // Parity of the permutation (p0, p1, pw0, pw1) of (0, 1, 2, 3).
-      const int perm[4] = {p0, p1, pw[0], pw[1]};
-      int inversions = 0;
-      for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j) inversions += perm[i] > perm[j];
-      if (inversions % 2 == 0)
-        wings.push_back(Wing{edge_records_[r].t, w[0], w[1]});
-      else
-        wings.push_back(Wing{edge_records_[r].t, w[1], w[0]});
-    }
-    // Chain the wings: start at a wing whose `from` is nobody's `to` (open fan), else at the
-    // smallest tetrahedron (wings are sorted by tetrahedron already).
-    unsigned char flags = 0;
-    std::size_t start = 0;
-    bool open = false;
-    for (std::size_t i = 0; i < wings.size() && !open; ++i) {
-      bool is_target = false;
-      for (const Wing& x : wings) is_target = is_target || x.to == wings[i].from;
-      if (!is_target) {
-        start = i;
-        open = true;
-      }
-    }
-    const std::size_t et_begin = et_.size();
-    std::size_t cur = start;
-    visited_.assign(wings.size(), 0);
-    el_.push_back(wings[cur].from);
-    for (std::size_t step = 0; step < wings.size(); ++step) {
-      visited_[cur] = 1;
-      et_.push_back(wings[cur].t);
-      const Index to = wings[cur].to;
-      if (step + 1 < wings.size() || open) el_.push_back(to);
-      std::size_t next = wings.size();
-      for (std::size_t i = 0; i < wings.size(); ++i)
-        if (wings[i].from == to) {
-          if (next != wings.size()) flags |= nonmanifold_flag; // two tetrahedra leave the same face
-          next = i;
-        }
-      // Stuck, or back to a visited tetrahedron before the end: several fans or cycles.
-      if (step + 1 < wings.size() && (next == wings.size() || visited_[next])) {
-        flags |= nonmanifold_flag;
-        break;
-      }
-      cur = next;
-    }
-    if (!open && cur != start) flags |= nonmanifold_flag;
-    if (flags & nonmanifold_flag) { // not a fan nor a cycle: keep the star in index order
-      et_.resize(et_begin);
-      el_.resize(el_offsets_.back());
-      for (const Wing& x : wings) {
-        et_.push_back(x.t);
-        el_.push_back(x.from);
-        el_.push_back(x.to);
-      }
-    }
-    if (open) flags |= boundary_flag;
-    edges_.push_back(Edge{v0, v1});
-    edge_flags_.push_back(flags);
-    et_offsets_.push_back(static_cast<Index>(et_.size()));
-    el_offsets_.push_back(static_cast<Index>(el_.size()));
-    a = b;
-  }
+  internal::for_each_group(
+      edge_records_.begin(), edge_records_.end(),
+      [](const Edge_record& x, const Edge_record& y) { return x.a == y.a && x.b == y.b; },
+      [&](auto first, auto last) {
+        star_.clear();
+        for (auto r = first; r != last; ++r) star_.push_back(r->t);
+        fan_.build(tree_->tetrahedra(), star_, first->a, first->b);
+        et_.insert(et_.end(), fan_.tetrahedra().begin(), fan_.tetrahedra().end());
+        el_.insert(el_.end(), fan_.link().begin(), fan_.link().end());
+        edges_.push_back(Edge{first->a, first->b});
+        edge_flags_.push_back(static_cast<unsigned char>((fan_.is_boundary() ? boundary_flag : 0) |
+                                                         (fan_.is_nonmanifold() ? nonmanifold_flag : 0)));
+        et_offsets_.push_back(static_cast<Index>(et_.size()));
+        el_offsets_.push_back(static_cast<Index>(el_.size()));
+      });
 
   // VE: the edges of each vertex of the leaf.
   vedge_offsets_.assign(nv + 1, 0);
@@ -469,20 +329,28 @@ void Leaf_topology<Octree>::build_edges() {
 /// Streams over the leaves of `tree` in depth-first order: for each leaf, builds the local
 /// relations `relations` (a combination of `Relations`), calls `f(const Leaf_topology<Octree>&)`,
 /// and discards them (the buffers are reused for the next leaf).
-template <class Octree, class Function>
-void for_each_leaf(const Octree& tree, unsigned relations, Function&& f) {
+///
+/// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf.
+template <class GT, class I, class Function, class NP = parameters::Default_named_parameters>
+void for_each_leaf(const PR_star_octree_3<GT, I>& tree, unsigned relations, Function&& f,
+                   const NP& np = parameters::default_values()) {
+  using Octree = PR_star_octree_3<GT, I>;
+  const internal::Progress_reporter<NP> progress(np);
   Leaf_topology<Octree> local;
+  const std::size_t total = tree.number_of_leaves();
+  std::size_t done = 0;
   for (typename Octree::Node_index leaf : tree.leaves()) {
     local.build(tree, leaf, relations);
     f(static_cast<const Leaf_topology<Octree>&>(local));
+    progress(++done, total);
   }
 }
 
 /// \ingroup PkgPRStarOctreeRef
 /// The star of vertex `v` (VT), by random access: finds the leaf of `v` and scans its list.
 /// Appends tetrahedron indices in increasing order to `out`.
-template <class Octree, class OutputIterator>
-OutputIterator vertex_star(const Octree& tree, typename Octree::Index v, OutputIterator out) {
+template <class GT, class I, class OutputIterator>
+OutputIterator vertex_star(const PR_star_octree_3<GT, I>& tree, I v, OutputIterator out) {
   for (auto t : tree.leaf_tetrahedra(tree.leaf_of_vertex(v))) {
     const auto& c = tree.tetrahedron(t);
     if (c[0] == v || c[1] == v || c[2] == v || c[3] == v) *out++ = t;
@@ -493,9 +361,10 @@ OutputIterator vertex_star(const Octree& tree, typename Octree::Index v, OutputI
 /// \ingroup PkgPRStarOctreeRef
 /// The tetrahedra across the four faces of tetrahedron `t` (TT), by random access:
 /// `[k]` is across the face opposite vertex `k`, or `Leaf_topology<Octree>::no_neighbor`.
-template <class Octree>
-std::array<typename Octree::Index, 4> tetrahedron_neighbors(const Octree& tree, typename Octree::Index t) {
-  using Index = typename Octree::Index;
+template <class GT, class I>
+std::array<I, 4> tetrahedron_neighbors(const PR_star_octree_3<GT, I>& tree, I t) {
+  using Octree = PR_star_octree_3<GT, I>;
+  using Index = I;
   std::array<Index, 4> result;
   const auto& c = tree.tetrahedron(t);
   for (int k = 0; k < 4; ++k) {
@@ -535,22 +404,28 @@ struct Simplex_counts {
 /// \ingroup PkgPRStarOctreeRef
 /// Counts vertices, edges, triangles (and boundary triangles) and tetrahedra by streaming over the
 /// leaves: each simplex is counted by the leaf owning its smallest vertex.
-template <class Octree>
-Simplex_counts count_simplices(const Octree& tree) {
+/// \param np optional named parameters: `progress(F)` (see `for_each_leaf()`).
+template <class GT, class I, class NP = parameters::Default_named_parameters>
+Simplex_counts count_simplices(const PR_star_octree_3<GT, I>& tree,
+                               const NP& np = parameters::default_values()) {
+  using Octree = PR_star_octree_3<GT, I>;
   Simplex_counts s;
   s.tetrahedra = tree.number_of_tetrahedra();
-  for_each_leaf(tree, VERTEX_TETRAHEDRA | EDGES | TRIANGLES, [&](const Leaf_topology<Octree>& local) {
-    for (auto v = local.vertex_begin(); v < local.vertex_end(); ++v)
-      if (!local.vertex_tetrahedra(v).empty()) ++s.vertices;
-    for (std::size_t e = 0; e < local.number_of_edges(); ++e) s.edges += local.owns_edge(e);
-    for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
-      if (!local.owns_triangle(f)) continue;
-      ++s.triangles;
-      const std::size_t n = local.triangle_tetrahedra(f).size();
-      s.boundary_triangles += (n == 1);
-      s.nonmanifold_triangles += (n > 2);
-    }
-  });
+  for_each_leaf(
+      tree, VERTEX_TETRAHEDRA | EDGES | TRIANGLES,
+      [&](const Leaf_topology<Octree>& local) {
+        for (auto v = local.vertex_begin(); v < local.vertex_end(); ++v)
+          if (!local.vertex_tetrahedra(v).empty()) ++s.vertices;
+        for (std::size_t e = 0; e < local.number_of_edges(); ++e) s.edges += local.owns_edge(e);
+        for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
+          if (!local.owns_triangle(f)) continue;
+          ++s.triangles;
+          const std::size_t n = local.triangle_tetrahedra(f).size();
+          s.boundary_triangles += (n == 1);
+          s.nonmanifold_triangles += (n > 2);
+        }
+      },
+      np);
   return s;
 }
 

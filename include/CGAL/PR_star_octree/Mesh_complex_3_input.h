@@ -171,7 +171,8 @@ make_input(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>&
 /// `double(Vertex_handle)` or a vertex property map.
 template <class Tr, class CornerIndex, class CurveIndex, class ScalarFieldOrMap>
 Mesh_complex_3_input<Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>>
-make_input(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>& c3t3, const ScalarFieldOrMap& field) {
+make_input(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>& c3t3,
+           const ScalarFieldOrMap& field) {
   return Mesh_complex_3_input<Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>>(c3t3, field);
 }
 

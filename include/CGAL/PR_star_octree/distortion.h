@@ -11,73 +11,22 @@
 /// seen as a hypersurface of R^4 through the tetrahedral mesh lifted by f.
 
 #include <CGAL/PR_star_octree/boundary.h>
-#include <CGAL/number_utils.h>
+#include <CGAL/PR_star_octree/internal/solid_angle.h>
+#include <CGAL/PR_star_octree/parameters.h>
 
-#include <Eigen/Dense>
+#include <boost/property_map/property_map.hpp>
 
-#include <array>
-#include <cmath>
-#include <cstddef>
-#include <functional>
-#include <limits>
 #include <algorithm>
-#include <iterator>
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <memory>
 #include <stdexcept>
-#include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace PR_star_octree {
-
-/// \ingroup PkgPRStarOctreeRef
-/// The solid angle at the origin of the cone spanned by the vectors `a`, `b`, `c` of R^3, by the
-/// formula of Van Oosterom and Strackee: `tan(Omega / 2) = |a.(b x c)| / (|a||b||c| + (a.b)|c| +
-/// (a.c)|b| + (b.c)|a|)`, evaluated with `atan2` so that it is stable for every angle in [0, 2 pi).
-inline double solid_angle_3(const std::array<double, 3>& a, const std::array<double, 3>& b,
-                            const std::array<double, 3>& c) {
-  const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                     a[2] * (b[0] * c[1] - b[1] * c[0]);
-  auto dot = [](const std::array<double, 3>& u, const std::array<double, 3>& v) {
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-  };
-  const double la = std::sqrt(dot(a, a)), lb = std::sqrt(dot(b, b)), lc = std::sqrt(dot(c, c));
-  const double den = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
-  return 2. * std::atan2(std::abs(det), den);
-}
-
-/// \ingroup PkgPRStarOctreeRef
-/// The solid angle at the origin of the cone spanned by three vectors of R^4, measured inside the
-/// 3-flat that holds them: the Van Oosterom-Strackee formula with `|det[a b c]|` replaced by the
-/// square root of the Gram determinant (computed with Eigen), which is intrinsic to the flat.
-inline double solid_angle_4(const Eigen::Vector4d& a, const Eigen::Vector4d& b, const Eigen::Vector4d& c) {
-  Eigen::Matrix<double, 4, 3> m;
-  m.col(0) = a;
-  m.col(1) = b;
-  m.col(2) = c;
-  const Eigen::Matrix3d gram = m.transpose() * m;
-  const double g = gram.determinant();
-  const double volume = g > 0 ? std::sqrt(g) : 0.;
-  const double la = std::sqrt(gram(0, 0)), lb = std::sqrt(gram(1, 1)), lc = std::sqrt(gram(2, 2));
-  const double den = la * lb * lc + gram(0, 1) * lc + gram(0, 2) * lb + gram(1, 2) * la;
-  return 2. * std::atan2(volume, den);
-}
-
-/// \ingroup PkgPRStarOctreeRef
-/// The solid angles at vertex `k` of the tetrahedron `p[0..3]` of R^3 and of its lift
-/// `(p[i], f[i])` to R^4.
-inline std::pair<double, double> corner_solid_angles(const std::array<std::array<double, 3>, 4>& p,
-                                                     const std::array<double, 4>& f, int k) {
-  std::array<std::array<double, 3>, 3> e;
-  Eigen::Vector4d l[3];
-  int n = 0;
-  for (int i = 0; i < 4; ++i) {
-    if (i == k) continue;
-    for (int a = 0; a < 3; ++a) e[n][a] = p[i][a] - p[k][a];
-    l[n] << e[n][0], e[n][1], e[n][2], f[i] - f[k];
-    ++n;
-  }
-  return {solid_angle_3(e[0], e[1], e[2]), solid_angle_4(l[0], l[1], l[2])};
-}
 
 /// \ingroup PkgPRStarOctreeRef
 /// The curvature fields at one vertex.
@@ -91,6 +40,57 @@ struct Vertex_curvature {
   double domain_curvature = 0;
   Vertex_type type = Vertex_type::UNREFERENCED;
 };
+
+/// \ingroup PkgPRStarOctreeRef
+/// A field stored with the octree, as a model of `ReadablePropertyMap` keyed by the user's vertex
+/// index (`std::size_t`) with value `double`: the scalar field of the input mesh
+/// (`scalar_field_map()`) or a coordinate (`coordinate_field_map()`).  The functions of this header
+/// read it in the octree's numbering directly; `get()` with a user index builds the inverse vertex
+/// permutation once, on first use.
+template <class Octree>
+class Octree_field_map {
+public:
+  using key_type = std::size_t;
+  using value_type = double;
+  using reference = double;
+  using category = boost::readable_property_map_tag;
+  using Index = typename Octree::Index;
+
+  /// `axis` 0, 1, 2 for x, y, z; -1 for the stored scalar field
+  Octree_field_map(const Octree& tree, int axis) : tree_(&tree), axis_(axis) {}
+  /// the value at vertex `v` of the octree's numbering
+  double at_octree_vertex(Index v) const {
+    return axis_ < 0 ? tree_->scalar(v) : tree_->coordinates(tree_->point(v))[axis_];
+  }
+  /// the value at vertex `i` of the user's numbering
+  friend double get(const Octree_field_map& m, std::size_t i) {
+    if (!m.from_original_)
+      m.from_original_ = std::make_shared<const std::vector<Index>>(m.tree_->vertex_from_original());
+    return m.at_octree_vertex((*m.from_original_)[i]);
+  }
+
+private:
+  const Octree* tree_;
+  int axis_;
+  mutable std::shared_ptr<const std::vector<Index>> from_original_;
+};
+
+/// \ingroup PkgPRStarOctreeRef
+/// The scalar field stored in the octree (from the input mesh), as a field map.
+/// \throws std::invalid_argument if the mesh has no scalar field
+template <class Octree>
+Octree_field_map<Octree> scalar_field_map(const Octree& tree) {
+  if (!tree.has_scalar_field()) throw std::invalid_argument("the mesh has no scalar field");
+  return Octree_field_map<Octree>(tree, -1);
+}
+
+/// \ingroup PkgPRStarOctreeRef
+/// A linear field: coordinate `axis` (0, 1, 2 for x, y, z) of each vertex, as a field map.
+template <class Octree>
+Octree_field_map<Octree> coordinate_field_map(const Octree& tree, int axis) {
+  if (axis < 0 || axis > 2) throw std::invalid_argument("coordinate axis must be 0, 1 or 2");
+  return Octree_field_map<Octree>(tree, axis);
+}
 
 namespace internal {
 
@@ -118,72 +118,139 @@ inline Vertex_curvature finish_curvature(double s3, double s4, Vertex_type type)
   return c;
 }
 
-// The curvature of the vertices [first, last) of the leaf of `local`.
-template <class Octree, class Field>
-void leaf_curvature(const Leaf_topology<Octree>& local, const Field& field,
-                    Vertex_classifier<Octree>& classifier, typename Octree::Index first,
-                    typename Octree::Index last, std::vector<Vertex_curvature>& out, std::size_t out_offset) {
-  const Octree& tree = local.octree();
-  for (auto v = first; v < last; ++v) {
-    double s3 = 0, s4 = 0;
-    for (auto t : local.vertex_tetrahedra(v)) {
-      const auto& c = tree.tetrahedron(t);
-      std::array<std::array<double, 3>, 4> p;
-      std::array<double, 4> f;
-      int k = 0;
-      for (int i = 0; i < 4; ++i) {
-        const auto& q = tree.point(c[i]);
-        p[i] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
-        f[i] = field(c[i]);
-        if (c[i] == v) k = i;
-      }
-      const auto a = corner_solid_angles(p, f, k);
-      s3 += a.first;
-      s4 += a.second;
-    }
-    out[v - out_offset] = finish_curvature(s3, s4, classifier.classify(local, v));
+// Writes the parts of a `Vertex_curvature` into separate maps (the optional ones may be absent).
+template <class DistortionMap, class DomainMap, class TypeMap>
+struct Curvature_split_map {
+  using key_type = std::size_t;
+  using value_type = Vertex_curvature;
+  using reference = void;
+  using category = boost::writable_property_map_tag;
+  DistortionMap distortion;
+  DomainMap domain;
+  TypeMap types;
+  friend void put(const Curvature_split_map& m, std::size_t i, const Vertex_curvature& c) {
+    put(m.distortion, i, c.distortion);
+    put_if_given(m.domain, i, c.domain_curvature);
+    put_if_given(m.types, i, c.type);
   }
+
+private:
+  template <class V>
+  static void put_if_given(const CGAL::internal_np::Param_not_found&, std::size_t, const V&) {}
+  template <class Map, class V>
+  static void put_if_given(const Map& map, std::size_t i, const V& v) {
+    put(map, i, v);
+  }
+};
+
+// The value of a field map at vertex `v` of the octree's numbering.
+template <class Octree, class FieldMap>
+double field_value(const Octree& tree, const FieldMap& field, typename Octree::Index v) {
+  return static_cast<double>(get(field, static_cast<std::size_t>(tree.original_vertex(v))));
+}
+template <class Octree>
+double field_value(const Octree&, const Octree_field_map<Octree>& field, typename Octree::Index v) {
+  return field.at_octree_vertex(v);
+}
+
+// The curvature of vertex `v` of the leaf of `local`.
+template <class Octree, class FieldMap>
+Vertex_curvature vertex_curvature(const Leaf_topology<Octree>& local, const FieldMap& field,
+                                  Vertex_classifier<Octree>& classifier, typename Octree::Index v) {
+  const Octree& tree = local.octree();
+  double s3 = 0, s4 = 0;
+  for (auto t : local.vertex_tetrahedra(v)) {
+    const auto& c = tree.tetrahedron(t);
+    std::array<std::array<double, 3>, 4> p;
+    std::array<double, 4> f;
+    int k = 0;
+    for (int i = 0; i < 4; ++i) {
+      p[i] = tree.coordinates(tree.point(c[i]));
+      f[i] = field_value(tree, field, c[i]);
+      if (c[i] == v) k = i;
+    }
+    const auto a = corner_solid_angles(p, f, k);
+    s3 += a.first;
+    s4 += a.second;
+  }
+  return finish_curvature(s3, s4, classifier.classify(local, v));
 }
 
 } // namespace internal
 
 /// \ingroup PkgPRStarOctreeRef
 /// The discrete distortion and the domain curvature of every vertex, by streaming over the leaves
-/// (VT is built per leaf, then discarded).  `field(v)` gives the scalar value of vertex `v` in the
-/// octree's numbering (see `octree_scalar_field()`, `coordinate_field()`).  The result is indexed
-/// in the octree's numbering.
-template <class Octree, class Field>
-std::vector<Vertex_curvature> compute_curvature(const Octree& tree, const Field& field) {
-  std::vector<Vertex_curvature> out(tree.number_of_vertices());
+/// (VT is built per leaf, then discarded), written into `curvature_map`.
+///
+/// \tparam FieldMap a model of `ReadablePropertyMap` with key `std::size_t` (the user's vertex
+///         index) and a value convertible to `double`: `scalar_field_map()`, `coordinate_field_map()`,
+///         or e.g. `CGAL::make_property_map(values)` for a `std::vector<double>` in the user's order
+/// \tparam CurvatureMap a model of `WritablePropertyMap` with key `std::size_t` (the user's vertex
+///         index) and value `Vertex_curvature`
+/// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf
+template <class GT, class I, class FieldMap, class CurvatureMap,
+          class NP = parameters::Default_named_parameters>
+Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const FieldMap& field,
+                                     CurvatureMap curvature_map,
+                                     const NP& np = parameters::default_values()) {
+  using Octree = PR_star_octree_3<GT, I>;
+  Vertex_type_counts counts;
   Vertex_classifier<Octree> classifier;
-  for_each_leaf(tree, VERTEX_TETRAHEDRA, [&](const Leaf_topology<Octree>& local) {
-    internal::leaf_curvature(local, field, classifier, local.vertex_begin(), local.vertex_end(), out, 0);
-  });
-  return out;
+  for_each_leaf(
+      tree, VERTEX_TETRAHEDRA,
+      [&](const Leaf_topology<Octree>& local) {
+        for (I v = local.vertex_begin(); v < local.vertex_end(); ++v) {
+          const Vertex_curvature c = internal::vertex_curvature(local, field, classifier, v);
+          counts.add(c.type);
+          put(curvature_map, static_cast<std::size_t>(tree.original_vertex(v)), c);
+        }
+      },
+      np);
+  return counts;
+}
+
+/// \ingroup PkgPRStarOctreeRef
+/// The discrete distortion of the field `field` at every vertex, written into `distortion_map`
+/// (a `WritablePropertyMap` keyed by the user's vertex index, value `double`); see
+/// `compute_curvature()` for `FieldMap`.
+///
+/// \param np optional named parameters: `domain_curvature_map(PMap)` receives the 3D concentrated
+/// curvature of the domain (value `double`), `vertex_type_map(PMap)` the `Vertex_type` of each
+/// vertex (both keyed by the user's vertex index); `progress(F)` as in `for_each_leaf()`
+template <class GT, class I, class FieldMap, class DistortionMap,
+          class NP = parameters::Default_named_parameters>
+Vertex_type_counts compute_discrete_distortion(const PR_star_octree_3<GT, I>& tree, const FieldMap& field,
+                                               DistortionMap distortion_map,
+                                               const NP& np = parameters::default_values()) {
+  using parameters::get_parameter;
+  const internal::Curvature_split_map<DistortionMap,
+                                      decltype(get_parameter(np, internal_np::domain_curvature_map)),
+                                      decltype(get_parameter(np, internal_np::vertex_type_map))>
+      split{distortion_map, get_parameter(np, internal_np::domain_curvature_map),
+            get_parameter(np, internal_np::vertex_type_map)};
+  return compute_curvature(tree, field, split, np);
 }
 
 /// \ingroup PkgPRStarOctreeRef
 /// The curvature at one vertex `v` (octree numbering): builds the local structure of its leaf only.
-template <class Octree, class Field>
-Vertex_curvature curvature_at(const Octree& tree, typename Octree::Index v, const Field& field) {
+template <class GT, class I, class FieldMap>
+Vertex_curvature curvature_at(const PR_star_octree_3<GT, I>& tree, I v, const FieldMap& field) {
+  using Octree = PR_star_octree_3<GT, I>;
   Leaf_topology<Octree> local(tree, tree.leaf_of_vertex(v), VERTEX_TETRAHEDRA);
   Vertex_classifier<Octree> classifier;
-  std::vector<Vertex_curvature> out(1);
-  internal::leaf_curvature(local, field, classifier, v, v + 1, out, v);
-  return out[0];
+  return internal::vertex_curvature(local, field, classifier, v);
 }
 
 /// \ingroup PkgPRStarOctreeRef
 /// The curvature of the vertices inside the box `box` (closed), a spatially coherent query: each
 /// leaf whose box meets `box` builds its local structure once for all its vertices.  Appends
 /// `(v, curvature)` pairs (octree numbering, increasing) to `out`.
-template <class Octree, class Field>
-void curvature_in_box(const Octree& tree, const Bbox_3& box, const Field& field,
-                      std::vector<std::pair<typename Octree::Index, Vertex_curvature>>& out) {
-  using Index = typename Octree::Index;
+template <class GT, class I, class FieldMap>
+void curvature_in_box(const PR_star_octree_3<GT, I>& tree, const Bbox_3& box, const FieldMap& field,
+                      std::vector<std::pair<I, Vertex_curvature>>& out) {
+  using Octree = PR_star_octree_3<GT, I>;
   Leaf_topology<Octree> local;
   Vertex_classifier<Octree> classifier;
-  std::vector<Vertex_curvature> one(1);
   // Descend the tree, pruning the nodes whose boxes miss `box`.
   std::vector<typename Octree::Node_index> stack{tree.root()};
   std::vector<typename Octree::Node_index> hit;
@@ -200,52 +267,18 @@ void curvature_in_box(const Octree& tree, const Bbox_3& box, const Field& field,
             [&](auto a, auto b) { return tree.node(a).vertex_begin < tree.node(b).vertex_begin; });
   for (auto n : hit) {
     bool built = false;
-    for (Index v = tree.node(n).vertex_begin; v < tree.node(n).vertex_end; ++v) {
-      const auto& p = tree.point(v);
-      const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
-      if (x < box.xmin() || x > box.xmax() || y < box.ymin() || y > box.ymax() || z < box.zmin() ||
-          z > box.zmax())
+    for (I v = tree.node(n).vertex_begin; v < tree.node(n).vertex_end; ++v) {
+      const std::array<double, 3> p = tree.coordinates(tree.point(v));
+      if (p[0] < box.xmin() || p[0] > box.xmax() || p[1] < box.ymin() || p[1] > box.ymax() ||
+          p[2] < box.zmin() || p[2] > box.zmax())
         continue;
       if (!built) {
         local.build(tree, n, VERTEX_TETRAHEDRA);
         built = true;
       }
-      internal::leaf_curvature(local, field, classifier, v, v + 1, one, v);
-      out.emplace_back(v, one[0]);
+      out.emplace_back(v, internal::vertex_curvature(local, field, classifier, v));
     }
   }
-}
-
-/// \ingroup PkgPRStarOctreeRef
-/// The scalar field stored in the octree (from the input mesh), as a field functor.
-template <class Octree>
-std::function<double(typename Octree::Index)> octree_scalar_field(const Octree& tree) {
-  if (!tree.has_scalar_field()) throw std::invalid_argument("the mesh has no scalar field");
-  return [&tree](typename Octree::Index v) { return tree.scalar(v); };
-}
-
-/// \ingroup PkgPRStarOctreeRef
-/// A linear field: coordinate `axis` (0, 1, 2 for x, y, z) of each vertex.
-template <class Octree>
-std::function<double(typename Octree::Index)> coordinate_field(const Octree& tree, int axis) {
-  if (axis < 0 || axis > 2) throw std::invalid_argument("coordinate axis must be 0, 1 or 2");
-  return [&tree, axis](typename Octree::Index v) {
-    const auto& p = tree.point(v);
-    return CGAL::to_double(axis == 0 ? p.x() : axis == 1 ? p.y() : p.z());
-  };
-}
-
-/// \ingroup PkgPRStarOctreeRef
-/// A field given in the user's original vertex numbering (any random-access range, e.g. a column
-/// of point data read from a file), seen through the octree's permutation.
-template <class Octree, class Values>
-std::function<double(typename Octree::Index)> original_order_field(const Octree& tree, const Values& values) {
-  if (static_cast<std::size_t>(std::size(values)) != tree.number_of_vertices())
-    throw std::invalid_argument("the field has " + std::to_string(std::size(values)) + " values for " +
-                                std::to_string(tree.number_of_vertices()) + " vertices");
-  return [&tree, &values](typename Octree::Index v) {
-    return static_cast<double>(std::begin(values)[tree.original_vertex(v)]);
-  };
 }
 
 } // namespace PR_star_octree

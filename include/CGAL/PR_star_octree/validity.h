@@ -15,6 +15,8 @@
 #include <CGAL/PR_star_octree/Index_arrays_input.h>
 #include <CGAL/PR_star_octree/Leaf_topology.h>
 #include <CGAL/PR_star_octree/boundary.h>
+#include <CGAL/PR_star_octree/internal/local_complex.h>
+#include <CGAL/PR_star_octree/parameters.h>
 
 #include <algorithm>
 #include <array>
@@ -36,16 +38,16 @@ namespace PR_star_octree {
 /// every tetrahedron positively oriented and remembers which ones it swapped
 /// (`PR_star_octree_3::is_reoriented()`), so the user's sign is recovered exactly.
 struct Validity_result {
-  bool valid = true;                    ///< no inverted, flat or non-manifold element
-  std::size_t tetrahedra = 0;           ///< number of tetrahedra checked
-  std::size_t positive = 0;             ///< tetrahedra positively oriented as listed by the user
-  std::size_t negative = 0;             ///< tetrahedra negatively oriented as listed by the user
-  std::size_t inverted = 0;             ///< `min(positive, negative)`: see the orientation rule
-  std::size_t degenerate = 0;           ///< flat tetrahedra (four coplanar vertices)
+  bool valid = true;                     ///< no inverted, flat or non-manifold element
+  std::size_t tetrahedra = 0;            ///< number of tetrahedra checked
+  std::size_t positive = 0;              ///< tetrahedra positively oriented as listed by the user
+  std::size_t negative = 0;              ///< tetrahedra negatively oriented as listed by the user
+  std::size_t inverted = 0;              ///< `min(positive, negative)`: see the orientation rule
+  std::size_t degenerate = 0;            ///< flat tetrahedra (four coplanar vertices)
   std::size_t nonmanifold_triangles = 0; ///< triangles incident in three or more tetrahedra
-  std::size_t nonmanifold_vertices = 0; ///< vertices whose link is neither a sphere nor a disc
-  long long euler_characteristic = 0;   ///< V - E + F - T over the referenced vertices
-  std::size_t boundary_triangles = 0;   ///< triangles incident in one tetrahedron
+  std::size_t nonmanifold_vertices = 0;  ///< vertices whose link is neither a sphere nor a disc
+  long long euler_characteristic = 0;    ///< V - E + F - T over the referenced vertices
+  std::size_t boundary_triangles = 0;    ///< triangles incident in one tetrahedron
   /// connected components of the boundary surface, two boundary triangles being connected when
   /// they share an edge (so two spheres touching at a vertex count twice)
   std::size_t boundary_components = 0;
@@ -54,14 +56,21 @@ struct Validity_result {
 /// \ingroup PkgPRStarOctreeRef
 /// Checks the mesh of `tree` leaf by leaf (see `Validity_result`).  Memory beyond the octree: the
 /// local structure of the largest leaf and the boundary triangles.
-template <class Octree>
-Validity_result check_validity(const Octree& tree) {
-  using Index = typename Octree::Index;
+/// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf of
+/// each of the two passes (`total` is twice the number of leaves)
+template <class GT, class I, class NP = parameters::Default_named_parameters>
+Validity_result check_validity(const PR_star_octree_3<GT, I>& tree,
+                               const NP& np = parameters::default_values()) {
+  using Octree = PR_star_octree_3<GT, I>;
+  using Index = I;
   Validity_result r;
   r.tetrahedra = tree.number_of_tetrahedra();
+  const internal::Progress_reporter<NP> report(np);
+  const std::size_t leaves = tree.number_of_leaves();
 
   // Euler characteristic and non-manifold triangles: simplices counted by their owning leaf.
-  const Simplex_counts counts = count_simplices(tree);
+  const Simplex_counts counts = count_simplices(
+      tree, parameters::progress([&](std::size_t done, std::size_t) { report(done, 2 * leaves); }));
   r.euler_characteristic = counts.euler_characteristic();
   r.nonmanifold_triangles = counts.nonmanifold_triangles;
   r.boundary_triangles = counts.boundary_triangles;
@@ -71,31 +80,37 @@ Validity_result check_validity(const Octree& tree) {
   Vertex_classifier<Octree> classifier;
   std::vector<std::array<Index, 3>> boundary;
   boundary.reserve(counts.boundary_triangles);
-  for_each_leaf(tree, VERTEX_TETRAHEDRA | TRIANGLES, [&](const Leaf_topology<Octree>& local) {
-    const auto owned = local.tetrahedra().owned();
-    for (Index t = owned.first; t < owned.second; ++t) {
-      const auto& c = tree.tetrahedron(t);
-      const CGAL::Orientation o =
-          orientation(tree.point(c[0]), tree.point(c[1]), tree.point(c[2]), tree.point(c[3]));
-      if (o == CGAL::COPLANAR)
-        ++r.degenerate;
-      else if ((o == CGAL::POSITIVE) != tree.is_reoriented(t)) // the user's sign
-        ++r.positive;
-      else
-        ++r.negative;
-    }
-    for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v)
-      r.nonmanifold_vertices += classifier.classify(local, v) == Vertex_type::NONMANIFOLD;
-    for (std::size_t f = 0; f < local.number_of_triangles(); ++f)
-      if (local.owns_triangle(f) && local.triangle_tetrahedra(f).size() == 1) boundary.push_back(local.triangle(f));
-  });
+  for_each_leaf(
+      tree, VERTEX_TETRAHEDRA | TRIANGLES,
+      [&](const Leaf_topology<Octree>& local) {
+        const auto owned = local.tetrahedra().owned();
+        for (Index t = owned.first; t < owned.second; ++t) {
+          const auto& c = tree.tetrahedron(t);
+          const CGAL::Orientation o =
+              orientation(tree.point(c[0]), tree.point(c[1]), tree.point(c[2]), tree.point(c[3]));
+          if (o == CGAL::COPLANAR)
+            ++r.degenerate;
+          else if ((o == CGAL::POSITIVE) != tree.is_reoriented(t)) // the user's sign
+            ++r.positive;
+          else
+            ++r.negative;
+        }
+        for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v)
+          r.nonmanifold_vertices += classifier.classify(local, v) == Vertex_type::NONMANIFOLD;
+        for (std::size_t f = 0; f < local.number_of_triangles(); ++f)
+          if (local.owns_triangle(f) && local.triangle_tetrahedra(f).size() == 1)
+            boundary.push_back(local.triangle(f));
+      },
+      parameters::progress([&](std::size_t done, std::size_t) { report(leaves + done, 2 * leaves); }));
   r.inverted = (std::min)(r.positive, r.negative);
 
-  // Boundary components: union-find on the boundary triangles through their shared edges.
+  // Boundary components: union-find on the boundary triangles, grouped by their shared edges.
   struct Edge_record {
     Index a, b;
     std::uint32_t triangle;
-    bool operator<(const Edge_record& o) const { return std::tie(a, b, triangle) < std::tie(o.a, o.b, o.triangle); }
+    bool operator<(const Edge_record& o) const {
+      return std::tie(a, b, triangle) < std::tie(o.a, o.b, o.triangle);
+    }
   };
   std::vector<Edge_record> edges;
   edges.reserve(3 * boundary.size());
@@ -107,29 +122,37 @@ Validity_result check_validity(const Octree& tree) {
     edges.push_back(Edge_record{t[0], t[2], id});
   }
   std::sort(edges.begin(), edges.end());
-  internal::Small_union_find uf;
+  internal::Union_find uf;
   uf.reset(boundary.size());
   std::size_t components = boundary.size();
-  for (std::size_t i = 1; i < edges.size(); ++i)
-    if (edges[i].a == edges[i - 1].a && edges[i].b == edges[i - 1].b &&
-        uf.unite(edges[i].triangle, edges[i - 1].triangle))
-      --components;
+  internal::for_each_group(
+      edges.begin(), edges.end(),
+      [](const Edge_record& x, const Edge_record& y) { return x.a == y.a && x.b == y.b; },
+      [&](auto first, auto last) {
+        for (auto e = first + 1; e < last; ++e)
+          if (uf.unite(e->triangle, first->triangle)) --components;
+      });
   r.boundary_components = components;
 
-  r.valid = r.inverted == 0 && r.degenerate == 0 && r.nonmanifold_triangles == 0 && r.nonmanifold_vertices == 0;
+  r.valid =
+      r.inverted == 0 && r.degenerate == 0 && r.nonmanifold_triangles == 0 && r.nonmanifold_vertices == 0;
   return r;
 }
 
 /// \ingroup PkgPRStarOctreeRef
-/// Checks a mesh given as index arrays (see `make_input()`): builds its PR-star octree with bucket
-/// threshold `bucket_size` and calls `check_validity(const Octree&)`.
+/// Checks a mesh given as index arrays (see `make_input()`): builds its PR-star octree and calls
+/// `check_validity(const PR_star_octree_3&, const NP&)`.
+/// \param np optional named parameters: `bucket_size` (default 50), `progress(F)`
 /// \throws std::invalid_argument as the `PR_star_octree_3` constructor (index out of range,
 /// a vertex twice in a tetrahedron, non-finite coordinate)
-template <class PointRange, class TetrahedronRange>
+template <class PointRange, class TetrahedronRange, class NP = parameters::Default_named_parameters>
 Validity_result check_validity(const PointRange& points, const TetrahedronRange& tetrahedra,
-                               std::size_t bucket_size = PR_star_octree_3<>::default_bucket_size) {
-  const PR_star_octree_3<> tree(make_input(points, tetrahedra), bucket_size);
-  return check_validity(tree);
+                               const NP& np = parameters::default_values()) {
+  const PR_star_octree_3<> tree(
+      make_input(points, tetrahedra),
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::bucket_size),
+                                   PR_star_octree_3<>::default_bucket_size));
+  return check_validity(tree, np);
 }
 
 } // namespace PR_star_octree

@@ -38,6 +38,27 @@ template <class T>
 struct has_orientation_3_object<T, void_t<decltype(std::declval<const T&>().orientation_3_object())>>
     : std::true_type {};
 
+// The traits' coordinate functors: `compute_x_3_object()(p)`, ... convertible with `CGAL::to_double`.
+template <class T, class = void>
+struct has_coordinate_functors : std::false_type {};
+template <class T>
+struct has_coordinate_functors<T,
+                               void_t<decltype(CGAL::to_double(std::declval<const T&>().compute_x_3_object()(
+                                          std::declval<const typename T::Point_3&>()))),
+                                      decltype(CGAL::to_double(std::declval<const T&>().compute_y_3_object()(
+                                          std::declval<const typename T::Point_3&>()))),
+                                      decltype(CGAL::to_double(std::declval<const T&>().compute_z_3_object()(
+                                          std::declval<const typename T::Point_3&>())))>> : std::true_type {};
+
+// `compute_squared_distance_3_object()(p, q)` convertible with `CGAL::to_double`.
+template <class T, class = void>
+struct has_squared_distance : std::false_type {};
+template <class T>
+struct has_squared_distance<
+    T, void_t<decltype(CGAL::to_double(std::declval<const T&>().compute_squared_distance_3_object()(
+           std::declval<const typename T::Point_3&>(), std::declval<const typename T::Point_3&>())))>>
+    : std::true_type {};
+
 template <class T, class = void>
 struct point_has_coordinates : std::false_type {};
 template <class T>
@@ -47,9 +68,13 @@ struct point_has_coordinates<T, void_t<decltype(CGAL::to_double(std::declval<con
     : std::true_type {};
 
 template <class GT, bool has_point = has_type_Point_3<GT>::value>
-struct traits_point_has_coordinates : std::false_type {};
+struct traits_has_coordinates : std::false_type {};
 template <class GT>
-struct traits_point_has_coordinates<GT, true> : point_has_coordinates<typename GT::Point_3> {};
+struct traits_has_coordinates<GT, true> : has_coordinate_functors<GT> {};
+template <class GT, bool has_point = has_type_Point_3<GT>::value>
+struct traits_has_squared_distance : std::false_type {};
+template <class GT>
+struct traits_has_squared_distance<GT, true> : has_squared_distance<GT> {};
 
 /// Checks the concept `PRStarOctreeTraits`; each failure is one readable `static_assert`.
 template <class GT>
@@ -61,9 +86,14 @@ struct Check_geom_traits {
   static_assert(has_type_Point_3<GT>::value,
                 "PR_star_octree_3: the geometric traits class must provide a nested type Point_3 "
                 "(see the concept PRStarOctreeTraits)");
-  static_assert(traits_point_has_coordinates<GT>::value,
-                "PR_star_octree_3: the geometric traits class must provide a Point_3 with x(), y(), z() "
+  static_assert(traits_has_coordinates<GT>::value,
+                "PR_star_octree_3: the geometric traits class must provide compute_x_3_object(), "
+                "compute_y_3_object() and compute_z_3_object() giving the coordinates of a Point_3 "
                 "(see the concept PRStarOctreeTraits)");
+  static_assert(
+      traits_has_squared_distance<GT>::value,
+      "PR_star_octree_3: the geometric traits class must provide compute_squared_distance_3_object() "
+      "(see the concept PRStarOctreeTraits)");
   static_assert(has_type_Orientation_3<GT>::value && has_orientation_3_object<GT>::value,
                 "PR_star_octree_3: the geometric traits class must provide Orientation_3 and "
                 "orientation_3_object() (an exact predicate; see the concept PRStarOctreeTraits)");
@@ -82,11 +112,16 @@ template <class T>
 struct has_number_of_tetrahedra<
     T, void_t<decltype(std::size_t(std::declval<const T&>().number_of_tetrahedra()))>> : std::true_type {};
 
-template <class T, class = void>
+// `point(i)` returns the traits' point type, or a point with x(), y(), z().
+template <class T, class Point_3, class = void>
 struct has_point_access : std::false_type {};
-template <class T>
-struct has_point_access<T, void_t<decltype(std::declval<const T&>().point(std::size_t(0)))>>
-    : point_has_coordinates<std::decay_t<decltype(std::declval<const T&>().point(std::size_t(0)))>> {};
+template <class T, class Point_3>
+struct has_point_access<T, Point_3, void_t<decltype(std::declval<const T&>().point(std::size_t(0)))>>
+    : std::integral_constant<
+          bool,
+          std::is_convertible<decltype(std::declval<const T&>().point(std::size_t(0))), Point_3>::value ||
+              point_has_coordinates<
+                  std::decay_t<decltype(std::declval<const T&>().point(std::size_t(0)))>>::value> {};
 
 template <class T, class = void>
 struct has_tetrahedron_access : std::false_type {};
@@ -101,15 +136,16 @@ struct has_scalar_access<T, void_t<decltype(bool(std::declval<const T&>().has_sc
                                    decltype(double(std::declval<const T&>().scalar(std::size_t(0))))>>
     : std::true_type {};
 
-/// Checks the concept `PRStarOctreeInputMesh`.
-template <class InputMesh>
+/// Checks the concept `PRStarOctreeInputMesh` (for an octree whose points are `Point_3`).
+template <class InputMesh, class Point_3>
 struct Check_input_mesh {
   static_assert(has_number_of_vertices<InputMesh>::value && has_number_of_tetrahedra<InputMesh>::value,
                 "PR_star_octree_3: the input mesh must provide number_of_vertices() and "
                 "number_of_tetrahedra() (see the concept PRStarOctreeInputMesh; use "
                 "CGAL::PR_star_octree::make_input() to adapt index arrays or a C3T3)");
-  static_assert(has_point_access<InputMesh>::value,
-                "PR_star_octree_3: the input mesh must provide point(i) returning a point with x(), y(), z() "
+  static_assert(has_point_access<InputMesh, Point_3>::value,
+                "PR_star_octree_3: the input mesh must provide point(i) returning the traits' Point_3 or a "
+                "point with x(), y(), z() "
                 "(see the concept PRStarOctreeInputMesh)");
   static_assert(has_tetrahedron_access<InputMesh>::value,
                 "PR_star_octree_3: the input mesh must provide tetrahedron(t) returning four vertex indices "

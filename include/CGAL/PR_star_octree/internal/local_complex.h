@@ -1,0 +1,529 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_INTERNAL_LOCAL_COMPLEX_H
+#define CGAL_PR_STAR_OCTREE_INTERNAL_LOCAL_COMPLEX_H
+
+// The local-complex kernel: the one implementation of the local topology that every part of the
+// package derives from a set of tetrahedra (a leaf's list, or the stars of a mesh being simplified):
+//   - grouping of sorted records (face pairing, edge grouping, boundary edges),
+//   - the faces of a set of tetrahedra paired into triangles (TT, boundary and non-manifold faces),
+//   - the fan of tetrahedra around an edge (its star in cyclic order, its link, its boundary wings),
+//   - the link of a vertex (link vertices, edges with multiplicities, triangles; sphere/disc test),
+//   - the vertex-vertex relation of a star.
+// Tetrahedra are `std::array<Index, 4>`, positively oriented, looked up by index in an array `T`.
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace PR_star_octree {
+namespace internal {
+
+// For a positively oriented tetrahedron c, (c[k], c[link_face[k][0]], c[link_face[k][1]],
+// c[link_face[k][2]]) is positively oriented too: each row is an even permutation putting k first.
+constexpr int link_face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+// The position of `v` in tetrahedron `c`, or -1.
+template <class Tetrahedron, class Index>
+inline int position(const Tetrahedron& c, Index v) {
+  for (int k = 0; k < 4; ++k)
+    if (c[k] == v) return k;
+  return -1;
+}
+
+template <class Tetrahedron, class Index>
+inline bool contains(const Tetrahedron& c, Index v) {
+  return c[0] == v || c[1] == v || c[2] == v || c[3] == v;
+}
+
+// Calls `f(first, last)` for each maximal run [first, last) of consecutive elements that are
+// `same()` as the run's first element (on a sorted range: each group of equal keys).
+template <class Iterator, class Same, class Function>
+void for_each_group(Iterator first, Iterator last, Same same, Function f) {
+  while (first != last) {
+    Iterator next = first;
+    ++next;
+    while (next != last && same(*first, *next)) ++next;
+    f(first, next);
+    first = next;
+  }
+}
+
+// Sorts `v` and removes duplicates.
+template <class Vector>
+void sort_unique(Vector& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+// The size of the intersection of two sorted ranges of distinct elements.
+template <class Vector>
+std::size_t intersection_size(const Vector& a, const Vector& b) {
+  std::size_t n = 0;
+  auto i = a.begin(), j = b.begin();
+  while (i != a.end() && j != b.end()) {
+    if (*i < *j)
+      ++i;
+    else if (*j < *i)
+      ++j;
+    else {
+      ++n;
+      ++i;
+      ++j;
+    }
+  }
+  return n;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Vertex-tetrahedra of a leaf
+// ---------------------------------------------------------------------------------------------
+
+// VT (paper Algorithm 1) of the vertices [vb, vb + nv) from the tetrahedra `shared` (a range of
+// indices into T) and the contiguous range `owned` of T, in CSR form: the star of vertex vb + i is
+// vt[offsets[i], offsets[i + 1]), in increasing tetrahedron order when `shared` precedes `owned`
+// and is sorted.  Count, then fill, without branches: a vertex outside the range goes to a dummy
+// slot `nv`, written past the end of the real data.
+template <class Tetrahedron, class Shared, class Index>
+void build_leaf_vertex_tetrahedra(const Tetrahedron* T, const Shared& shared, std::pair<Index, Index> owned,
+                                  Index vb, std::size_t nv, std::vector<Index>& offsets,
+                                  std::vector<Index>& vt, std::vector<Index>& scratch) {
+  offsets.assign(nv + 2, 0);
+  Index* count = offsets.data() + 1;
+  auto slot = [&](Index v) {
+    const std::size_t d = static_cast<Index>(v - vb); // wraps around for v < vb
+    return d < nv ? d : nv;
+  };
+  auto add = [&](Index t) {
+    const Tetrahedron& c = T[t];
+    ++count[slot(c[0])];
+    ++count[slot(c[1])];
+    ++count[slot(c[2])];
+    ++count[slot(c[3])];
+  };
+  for (Index t : shared) add(t);
+  for (Index t = owned.first; t < owned.second; ++t) add(t);
+  offsets[nv + 1] = 0; // the dummy slot writes to one trash position
+  for (std::size_t i = 0; i < nv; ++i) offsets[i + 1] += offsets[i];
+  vt.resize(offsets[nv] + 1);
+  scratch.assign(offsets.begin(), offsets.end() - 1);
+  scratch[nv] = offsets[nv];
+  Index* pos = scratch.data();
+  Index* out = vt.data();
+  auto put = [&](Index t) {
+    const Tetrahedron& c = T[t];
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t i = slot(c[k]);
+      out[pos[i]] = t;
+      pos[i] += (i != nv);
+    }
+  };
+  for (Index t : shared) put(t);
+  for (Index t = owned.first; t < owned.second; ++t) put(t);
+  offsets.resize(nv + 1);
+  vt.resize(offsets[nv]);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Face pairing
+// ---------------------------------------------------------------------------------------------
+
+// The faces of a set of tetrahedra, sorted by their (sorted) vertices and grouped: one group per
+// triangle, holding the tetrahedra incident in it (one on the boundary, two inside, three or more
+// for a non-manifold triangle).
+template <class Index>
+class Face_pairing {
+public:
+  struct Record {
+    std::array<Index, 3> v; // sorted vertices of the face
+    Index local;            // position of the tetrahedron in the caller's list
+    int k;                  // the face is opposite vertex k of the tetrahedron
+    bool operator<(const Record& o) const { return std::tie(v, local) < std::tie(o.v, o.local); }
+  };
+
+  // Collects the faces of the tetrahedra `list[i]` of `T` that `keep(face)` accepts (a face given
+  // by its three vertices, unsorted), then sorts them.
+  template <class Tetrahedra, class List, class Keep>
+  void build(const Tetrahedra& T, const List& list, Keep keep) {
+    records_.clear();
+    std::size_t i = 0;
+    for (auto it = list.begin(); it != list.end(); ++it, ++i) {
+      const auto& c = T[*it];
+      for (int k = 0; k < 4; ++k) {
+        std::array<Index, 3> f{{c[(k + 1) & 3], c[(k + 2) & 3], c[(k + 3) & 3]}};
+        if (!keep(f)) continue;
+        std::sort(f.begin(), f.end());
+        records_.push_back(Record{f, static_cast<Index>(i), k});
+      }
+    }
+    std::sort(records_.begin(), records_.end());
+  }
+
+  // Calls `f(first, last)` with the records of each triangle.
+  template <class Function>
+  void for_each_triangle(Function f) const {
+    for_each_group(
+        records_.begin(), records_.end(), [](const Record& a, const Record& b) { return a.v == b.v; }, f);
+  }
+
+  std::size_t capacity_bytes() const { return records_.capacity() * sizeof(Record); }
+
+private:
+  std::vector<Record> records_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Edge fans
+// ---------------------------------------------------------------------------------------------
+
+// The star of an edge (v0, v1): its tetrahedra in cyclic order around it (right-hand rule around
+// v0 -> v1) and its link (the vertices opposite the edge, in the same order; one more vertex than
+// tetrahedra for an open fan, i.e. a boundary edge).  When the star is neither a closed cycle nor
+// a single open fan, the edge is non-manifold: the tetrahedra stay in the given order and the link
+// lists the two opposite vertices of each.
+template <class Index>
+class Edge_fan {
+public:
+  // Each tetrahedron of the star is a directed edge of the link polygon, from wing to wing:
+  // (v0, v1, from, to) is positively oriented.
+  struct Wing {
+    Index t, from, to;
+  };
+
+  // `star`: the tetrahedra containing both v0 and v1 (any order; ties are broken by this order).
+  template <class Tetrahedra, class Star>
+  void build(const Tetrahedra& T, const Star& star, Index v0, Index v1) {
+    make_wings(T, star, v0, v1);
+    chain();
+  }
+
+  // Only the wings (no cyclic order): enough for `boundary_wings()`.
+  template <class Tetrahedra, class Star>
+  void make_wings(const Tetrahedra& T, const Star& star, Index v0, Index v1) {
+    wings_.clear();
+    for (Index t : star) {
+      const auto& c = T[t];
+      const int p0 = position(c, v0), p1 = position(c, v1);
+      Index w[2];
+      int pw[2], n = 0;
+      for (int k = 0; k < 4; ++k)
+        if (k != p0 && k != p1) {
+          w[n] = c[k];
+          pw[n++] = k;
+        }
+      // Parity of the permutation (p0, p1, pw0, pw1) of (0, 1, 2, 3).
+      const int perm[4] = {p0, p1, pw[0], pw[1]};
+      int inversions = 0;
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) inversions += perm[i] > perm[j];
+      if (inversions % 2 == 0)
+        wings_.push_back(Wing{t, w[0], w[1]});
+      else
+        wings_.push_back(Wing{t, w[1], w[0]});
+    }
+  }
+
+  const std::vector<Wing>& wings() const { return wings_; }
+  // in cyclic order (after `build()`)
+  const std::vector<Index>& tetrahedra() const { return tets_; }
+  const std::vector<Index>& link() const { return link_; }
+  bool is_boundary() const { return open_; }
+  bool is_nonmanifold() const { return nonmanifold_; }
+
+  // The third vertices of the triangles (v0, v1, w) of the star that are incident in a single
+  // tetrahedron (boundary triangles), sorted.  Valid after `make_wings()` or `build()`.
+  const std::vector<Index>& boundary_wings() {
+    all_.clear();
+    for (const Wing& x : wings_) {
+      all_.push_back(x.from);
+      all_.push_back(x.to);
+    }
+    std::sort(all_.begin(), all_.end());
+    single_.clear();
+    for_each_group(
+        all_.begin(), all_.end(), [](Index a, Index b) { return a == b; },
+        [&](auto first, auto last) {
+          if (last - first == 1) single_.push_back(*first);
+        });
+    return single_;
+  }
+
+private:
+  // Chain the wings: start at a wing whose `from` is nobody's `to` (open fan), else at the first.
+  void chain() {
+    const std::size_t n = wings_.size();
+    tets_.clear();
+    link_.clear();
+    nonmanifold_ = false;
+    open_ = false;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < n && !open_; ++i) {
+      bool is_target = false;
+      for (const Wing& x : wings_) is_target = is_target || x.to == wings_[i].from;
+      if (!is_target) {
+        start = i;
+        open_ = true;
+      }
+    }
+    std::size_t cur = start;
+    visited_.assign(n, 0);
+    link_.push_back(wings_[cur].from);
+    for (std::size_t step = 0; step < n; ++step) {
+      visited_[cur] = 1;
+      tets_.push_back(wings_[cur].t);
+      const Index to = wings_[cur].to;
+      if (step + 1 < n || open_) link_.push_back(to);
+      std::size_t next = n;
+      for (std::size_t i = 0; i < n; ++i)
+        if (wings_[i].from == to) {
+          if (next != n) nonmanifold_ = true; // two tetrahedra leave the same face
+          next = i;
+        }
+      // Stuck, or back to a visited tetrahedron before the end: several fans or cycles.
+      if (step + 1 < n && (next == n || visited_[next])) {
+        nonmanifold_ = true;
+        break;
+      }
+      cur = next;
+    }
+    if (!open_ && cur != start) nonmanifold_ = true;
+    if (nonmanifold_) { // not a fan nor a cycle: keep the star in the given order
+      tets_.clear();
+      link_.clear();
+      for (const Wing& x : wings_) {
+        tets_.push_back(x.t);
+        link_.push_back(x.from);
+        link_.push_back(x.to);
+      }
+    }
+  }
+
+  std::vector<Wing> wings_;
+  std::vector<Index> tets_, link_, all_, single_;
+  std::vector<unsigned char> visited_;
+  bool open_ = false, nonmanifold_ = false;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Vertex links
+// ---------------------------------------------------------------------------------------------
+
+// An open-addressing map from keys (one or two indices) to dense ids, cleared in O(1) by a
+// generation stamp.
+template <class Key>
+class Small_map {
+public:
+  void reset(std::size_t n) {
+    std::size_t size = 16;
+    while (size < 2 * n) size *= 2;
+    if (keys_.size() < size) {
+      keys_.assign(size, Key());
+      values_.assign(size, 0);
+      stamps_.assign(size, 0);
+      generation_ = 0;
+    }
+    mask_ = size - 1;
+    if (++generation_ == 0) {
+      std::fill(stamps_.begin(), stamps_.end(), 0);
+      generation_ = 1;
+    }
+  }
+  // the id of `key`; a new key gets `next`, which is then incremented
+  std::uint32_t find_or_insert(const Key& key, std::uint32_t& next) {
+    std::size_t h = hash(key) & mask_;
+    while (stamps_[h] == generation_) {
+      if (keys_[h] == key) return values_[h];
+      h = (h + 1) & mask_;
+    }
+    stamps_[h] = generation_;
+    keys_[h] = key;
+    values_[h] = next++;
+    return values_[h];
+  }
+
+private:
+  static std::uint64_t mix(std::uint64_t x) { return (x * 0x9E3779B97F4A7C15ull) >> 32; }
+  template <class I>
+  static std::size_t hash(I x, std::enable_if_t<std::is_integral<I>::value>* = nullptr) {
+    return static_cast<std::size_t>(mix(static_cast<std::uint64_t>(x)));
+  }
+  template <class I>
+  static std::size_t hash(const std::pair<I, I>& e) {
+    if constexpr (sizeof(I) <= 4)
+      return static_cast<std::size_t>(
+          mix(static_cast<std::uint64_t>(e.first) << 32 | static_cast<std::uint64_t>(e.second)));
+    else
+      return static_cast<std::size_t>(mix(static_cast<std::uint64_t>(e.first) * 0xC2B2AE3D27D4EB4Full ^
+                                          static_cast<std::uint64_t>(e.second)));
+  }
+
+  std::vector<Key> keys_;
+  std::vector<std::uint32_t> values_, stamps_;
+  std::uint32_t generation_ = 0;
+  std::size_t mask_ = 0;
+};
+
+// Union-find on small dense index sets.
+class Union_find {
+public:
+  void reset(std::size_t n) {
+    parent_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) parent_[i] = static_cast<std::uint32_t>(i);
+  }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  bool unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return false;
+    parent_[a] = b;
+    return true;
+  }
+
+private:
+  std::vector<std::uint32_t> parent_;
+};
+
+// The link of a vertex v, from its star: one link triangle per tetrahedron (the face opposite v),
+// the link edges with their multiplicities (a link edge (a, b) is the triangle (v, a, b); it is in
+// one link triangle when that triangle is on the boundary of the mesh, two inside, three or more
+// when it is non-manifold) and, on request, the link vertices.
+template <class Index>
+class Vertex_link {
+public:
+  struct Edge {
+    Index a, b;           // the two vertices, a < b
+    std::uint32_t ia, ib; // their link vertex ids (when built with vertices)
+    std::uint32_t count;  // the number of link triangles containing the edge
+  };
+
+  // Builds the link of `v` from its star (tetrahedron indices into `T`).  Stops early, returning
+  // false, as soon as a link edge is found in three link triangles when `stop_at_nonmanifold`.
+  template <class Tetrahedra, class Star>
+  bool build(const Tetrahedra& T, const Star& star, Index v, bool with_vertices, bool stop_at_nonmanifold) {
+    const std::size_t n = static_cast<std::size_t>(std::distance(star.begin(), star.end()));
+    triangles_ = n;
+    with_vertices_ = with_vertices;
+    if (with_vertices) {
+      vertex_ids_.reset(3 * n);
+      vertices_.clear();
+    }
+    edge_ids_.reset(3 * n);
+    edges_.clear();
+    std::uint32_t nv = 0;
+    for (Index t : star) {
+      const auto& c = T[t];
+      Index o[3];
+      int m = 0;
+      for (int k = 0; k < 4; ++k)
+        if (c[k] != v) o[m++] = c[k];
+      std::uint32_t id[3] = {0, 0, 0};
+      if (with_vertices)
+        for (int i = 0; i < 3; ++i) {
+          id[i] = vertex_ids_.find_or_insert(o[i], nv);
+          if (id[i] == vertices_.size()) vertices_.push_back(o[i]);
+        }
+      static const int pairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
+      for (const auto& p : pairs) {
+        const Index a = o[p[0]], b = o[p[1]];
+        std::uint32_t next = static_cast<std::uint32_t>(edges_.size());
+        const bool ordered = a < b;
+        const std::uint32_t e =
+            edge_ids_.find_or_insert(ordered ? std::make_pair(a, b) : std::make_pair(b, a), next);
+        if (e == edges_.size())
+          edges_.push_back(ordered ? Edge{a, b, id[p[0]], id[p[1]], 0} : Edge{b, a, id[p[1]], id[p[0]], 0});
+        if (++edges_[e].count > 2 && stop_at_nonmanifold) return false;
+      }
+    }
+    return true;
+  }
+
+  std::size_t number_of_triangles() const { return triangles_; }
+  const std::vector<Edge>& edges() const { return edges_; }
+  // the link vertices, in order of first appearance (built with vertices only)
+  const std::vector<Index>& vertices() const { return vertices_; }
+  std::size_t number_of_boundary_edges() const {
+    std::size_t n = 0;
+    for (const Edge& e : edges_) n += (e.count == 1);
+    return n;
+  }
+  // The paper's test (Section 7): in a closed link every edge bounds two triangles, 2|e| = 3|t|.
+  bool euler_count_says_boundary() const { return 2 * edges_.size() != 3 * triangles_; }
+
+  // Whether the link is a triangulated sphere or disc: Euler characteristic 2 (closed) or 1, connected,
+  // every edge in at most two triangles, the boundary a single simple loop.  Needs the vertices.
+  bool is_sphere_or_disc() {
+    const std::size_t nv = vertices_.size();
+    std::size_t boundary_edges = 0;
+    for (const Edge& e : edges_) {
+      if (e.count > 2) return false;
+      boundary_edges += (e.count == 1);
+    }
+    const long long chi = static_cast<long long>(nv) - static_cast<long long>(edges_.size()) +
+                          static_cast<long long>(triangles_);
+    if (boundary_edges == 0 ? chi != 2 : chi != 1) return false;
+    uf_.reset(nv);
+    std::size_t components = nv;
+    for (const Edge& e : edges_)
+      if (uf_.unite(e.ia, e.ib)) --components;
+    if (components != 1) return false;
+    if (boundary_edges == 0) return true;
+    boundary_degree_.assign(nv, 0);
+    std::size_t boundary_vertices = 0;
+    for (const Edge& e : edges_)
+      if (e.count == 1) {
+        boundary_vertices += (boundary_degree_[e.ia]++ == 0);
+        boundary_vertices += (boundary_degree_[e.ib]++ == 0);
+      }
+    for (std::size_t i = 0; i < nv; ++i)
+      if (boundary_degree_[i] != 0 && boundary_degree_[i] != 2) return false;
+    // All boundary vertices of degree 2: disjoint cycles; a single loop is connected.
+    if (boundary_vertices != boundary_edges) return false;
+    uf_.reset(nv);
+    std::size_t loops = boundary_vertices;
+    for (const Edge& e : edges_)
+      if (e.count == 1 && uf_.unite(e.ia, e.ib)) --loops;
+    return loops == 1;
+  }
+
+private:
+  std::size_t triangles_ = 0;
+  bool with_vertices_ = false;
+  Small_map<Index> vertex_ids_;
+  Small_map<std::pair<Index, Index>> edge_ids_;
+  std::vector<Edge> edges_;
+  std::vector<Index> vertices_;
+  std::vector<unsigned char> boundary_degree_;
+  Union_find uf_;
+};
+
+// The vertices adjacent to `v` in the tetrahedra `star` of `T`, sorted, appended to `out` from
+// position `from` on (what was there before is kept).
+template <class Tetrahedra, class Star, class Index>
+void star_neighbors(const Tetrahedra& T, const Star& star, Index v, std::vector<Index>& out,
+                    std::size_t from = 0) {
+  out.resize(from);
+  for (Index t : star)
+    for (Index w : T[t])
+      if (w != v) out.push_back(w);
+  std::sort(out.begin() + from, out.end());
+  out.erase(std::unique(out.begin() + from, out.end()), out.end());
+}
+
+} // namespace internal
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_INTERNAL_LOCAL_COMPLEX_H

@@ -1,0 +1,141 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_PARAMETERS_H
+#define CGAL_PR_STAR_OCTREE_PARAMETERS_H
+
+/// \file parameters.h
+/// The named parameters of the PR-star octree package.
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <cstddef>
+
+namespace CGAL {
+namespace PR_star_octree {
+
+namespace internal_np {
+// The tags of the package's own named parameters (CGAL's tags live in `CGAL::internal_np`).
+enum bucket_size_t { bucket_size };
+enum maximum_depth_t { maximum_depth };
+enum check_links_t { check_links };
+enum with_boundary_triangles_t { with_boundary_triangles };
+enum boundary_triangles_output_t { boundary_triangles_output };
+enum target_fraction_t { target_fraction };
+enum max_edge_length_t { max_edge_length };
+enum max_rounds_t { max_rounds };
+enum priority_t { priority };
+enum progress_t { progress };
+enum domain_curvature_map_t { domain_curvature_map };
+enum vertex_type_map_t { vertex_type_map };
+} // namespace internal_np
+
+/// \ingroup PkgPRStarOctreeRef
+/// The named parameters of the package.
+///
+/// They are used as %CGAL's (`CGAL/Named_function_parameters.h`): a function takes an optional last
+/// argument `np` made by chaining parameters, e.g.
+/// \code
+/// namespace params = CGAL::PR_star_octree::parameters;
+/// compute_boundary(tree, type_map, params::check_links(false).progress(report));
+/// simplify(input, params::target_fraction(0.5).bucket_size(100).geom_traits(gt));
+/// \endcode
+/// The package's own parameters chain with each other and are followed by %CGAL's (`geom_traits`,
+/// `verbose`, ...); a chain may also start with a %CGAL parameter when no package parameter is needed.
+///
+/// | parameter | used by | default |
+/// |---|---|---|
+/// | `bucket_size(std::size_t)` | `simplify()`, `check_validity()` on arrays, the `PR_star_octree_3`
+/// constructor | 50 | | `maximum_depth(std::size_t)` | the `PR_star_octree_3` constructor | 32 | |
+/// `geom_traits(gt)` (%CGAL's) | the `PR_star_octree_3` constructor, `simplify()` | `GeomTraits()` | |
+/// `check_links(bool)` | `compute_boundary()`, `Vertex_classifier` | `true` | |
+/// `with_boundary_triangles(bool)` | `compute_boundary()` | `true` | |
+/// `boundary_triangles_output(OutputIterator)` | `compute_boundary()` | none | | `target_fraction(double)`,
+/// `max_edge_length(double)`, `max_rounds(std::size_t)`, `priority(F)` | `simplify()` | 0, infinity, 1000,
+/// `Edge_length_priority` | | `progress(F)` | every leaf-streaming function | none | |
+/// `domain_curvature_map(PMap)`, `vertex_type_map(PMap)` | `compute_discrete_distortion()` | none |
+namespace parameters {
+using namespace CGAL::parameters;
+
+using CGAL::parameters::Default_named_parameters;
+using CGAL::parameters::default_values;
+using CGAL::parameters::geom_traits;
+using CGAL::parameters::verbose;
+
+/// \ingroup PkgPRStarOctreeRef
+/// A chain of named parameters that accepts the package's own parameters as member functions, as
+/// well as %CGAL's (inherited from `CGAL::Named_function_parameters`).
+template <class T, class Tag, class Base = CGAL::internal_np::No_property>
+struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base> {
+  using CGAL::Named_function_parameters<T, Tag, Base>::Named_function_parameters;
+
+#define CGAL_PR_STAR_OCTREE_PARAMETER(NAME)                                                                  \
+  template <class K>                                                                                         \
+  Named_parameters<K, internal_np::NAME##_t, Named_parameters> NAME(const K& k) const {                      \
+    return Named_parameters<K, internal_np::NAME##_t, Named_parameters>(k, *this);                           \
+  }
+  /// \cond SKIP_IN_MANUAL
+  CGAL_PR_STAR_OCTREE_PARAMETER(bucket_size)
+  CGAL_PR_STAR_OCTREE_PARAMETER(maximum_depth)
+  CGAL_PR_STAR_OCTREE_PARAMETER(check_links)
+  CGAL_PR_STAR_OCTREE_PARAMETER(with_boundary_triangles)
+  CGAL_PR_STAR_OCTREE_PARAMETER(boundary_triangles_output)
+  CGAL_PR_STAR_OCTREE_PARAMETER(target_fraction)
+  CGAL_PR_STAR_OCTREE_PARAMETER(max_edge_length)
+  CGAL_PR_STAR_OCTREE_PARAMETER(max_rounds)
+  CGAL_PR_STAR_OCTREE_PARAMETER(priority)
+  CGAL_PR_STAR_OCTREE_PARAMETER(progress)
+  CGAL_PR_STAR_OCTREE_PARAMETER(domain_curvature_map)
+  CGAL_PR_STAR_OCTREE_PARAMETER(vertex_type_map)
+  /// \endcond
+#undef CGAL_PR_STAR_OCTREE_PARAMETER
+};
+
+/// \cond SKIP_IN_MANUAL
+#define CGAL_PR_STAR_OCTREE_PARAMETER(NAME)                                                                  \
+  template <class K>                                                                                         \
+  Named_parameters<K, internal_np::NAME##_t> NAME(const K& k) {                                              \
+    return Named_parameters<K, internal_np::NAME##_t>(k);                                                    \
+  }
+CGAL_PR_STAR_OCTREE_PARAMETER(bucket_size)
+CGAL_PR_STAR_OCTREE_PARAMETER(maximum_depth)
+CGAL_PR_STAR_OCTREE_PARAMETER(check_links)
+CGAL_PR_STAR_OCTREE_PARAMETER(with_boundary_triangles)
+CGAL_PR_STAR_OCTREE_PARAMETER(boundary_triangles_output)
+CGAL_PR_STAR_OCTREE_PARAMETER(target_fraction)
+CGAL_PR_STAR_OCTREE_PARAMETER(max_edge_length)
+CGAL_PR_STAR_OCTREE_PARAMETER(max_rounds)
+CGAL_PR_STAR_OCTREE_PARAMETER(priority)
+CGAL_PR_STAR_OCTREE_PARAMETER(progress)
+CGAL_PR_STAR_OCTREE_PARAMETER(domain_curvature_map)
+CGAL_PR_STAR_OCTREE_PARAMETER(vertex_type_map)
+#undef CGAL_PR_STAR_OCTREE_PARAMETER
+/// \endcond
+
+} // namespace parameters
+
+namespace internal {
+
+// Calls the `progress` named parameter, if any, with (done, total).
+template <class NP>
+struct Progress_reporter {
+  explicit Progress_reporter(const NP& np) : np_(np) {}
+  void operator()(std::size_t done, std::size_t total) const { call(done, total, get()); }
+
+private:
+  decltype(auto) get() const { return CGAL::parameters::get_parameter(np_, internal_np::progress); }
+  static void call(std::size_t, std::size_t, CGAL::internal_np::Param_not_found) {}
+  template <class F>
+  static void call(std::size_t done, std::size_t total, const F& f) {
+    f(done, total);
+  }
+  const NP& np_;
+};
+
+} // namespace internal
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_PARAMETERS_H
