@@ -19,6 +19,7 @@
 #include <iostream>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace PSO = CGAL::PR_star_octree;
@@ -39,7 +40,8 @@ void check(bool ok, const char* what) {
 constexpr int n = 3; // cells per side
 
 // The n^3 unit cells of [0, n]^3, each cut into the six tetrahedra around its main diagonal (a
-// conforming mesh: every cell uses the same diagonal direction).
+// conforming mesh: every cell uses the same diagonal direction), all listed with the sign of the
+// permutation of the axes corrected so that they have one orientation.
 void make_grid(std::vector<Point>& points, std::vector<std::array<int, 4>>& tetrahedra) {
   auto id = [](int x, int y, int z) { return x + (n + 1) * (y + (n + 1) * z); };
   for (int z = 0; z <= n; ++z)
@@ -57,6 +59,8 @@ void make_grid(std::vector<Point>& points, std::vector<std::array<int, 4>>& tetr
             ++p[a[k]];
             t[k + 1] = id(p[0], p[1], p[2]);
           }
+          const int inversions = (a[0] > a[1]) + (a[0] > a[2]) + (a[1] > a[2]);
+          if (inversions % 2 == 1) std::swap(t[2], t[3]); // all of one orientation: valid as listed
           tetrahedra.push_back(t);
         }
 }
@@ -114,7 +118,7 @@ int main(int argc, char** argv) {
   {
     //! [distortion]
     std::vector<double> f(points.size()); // a scalar field, in the user's numbering
-    for (std::size_t v = 0; v < points.size(); ++v) f[v] = CGAL::squared_distance(points[v], CGAL::ORIGIN);
+    for (std::size_t v = 0; v < points.size(); ++v) f[v] = (points[v] - CGAL::ORIGIN).squared_length();
     std::vector<double> distortion(points.size()), domain_curvature(points.size());
     PSO::compute_discrete_distortion(tree, CGAL::make_property_map(f), CGAL::make_property_map(distortion),
                                      params::domain_curvature_map(CGAL::make_property_map(domain_curvature)));
