@@ -9,6 +9,8 @@
 
 #include <baselines/Cgal_triangulation_baseline.h>
 
+#include "test_harness.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -24,16 +26,6 @@ using Index = Baseline::Index;
 using Point_3 = Baseline::Point_3;
 using Tetrahedron = Baseline::Tetrahedron;
 constexpr Index no_index = Baseline::no_index;
-
-int failures = 0;
-
-#define CHECK(cond)                                                                                          \
-  do {                                                                                                       \
-    if (!(cond)) {                                                                                           \
-      ++failures;                                                                                            \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": CHECK failed: " #cond << std::endl;                     \
-    }                                                                                                        \
-  } while (false)
 
 struct Mesh {
   std::vector<Point_3> points;
@@ -167,7 +159,7 @@ void check_against_reference(const Mesh& m, const Baseline& b) {
   // TT
   std::size_t tt_errors = 0;
   for (Index t = 0; t < m.tets.size(); ++t) tt_errors += b.tetrahedron_neighbors(t) != ref.neighbors(m, t);
-  CHECK(tt_errors == 0);
+  CHECK_EQUAL(tt_errors, std::size_t(0));
   // VT, by both entry points, and the boundary vertices
   std::size_t vt_errors = 0, boundary_errors = 0;
   for (Index v = 0; v < m.points.size(); ++v) {
@@ -185,8 +177,8 @@ void check_against_reference(const Mesh& m, const Baseline& b) {
     vt_errors += s != ref.vt[v];
   });
   vt_errors += expected_v != m.points.size();
-  CHECK(vt_errors == 0);
-  CHECK(boundary_errors == 0);
+  CHECK_EQUAL(vt_errors, std::size_t(0));
+  CHECK_EQUAL(boundary_errors, std::size_t(0));
   // Edge stars: all edges once, ordered, boundary flag; edge_star() agrees
   std::size_t edges = 0, edge_errors = 0;
   b.for_each_edge_star([&](Index a, Index c, const std::vector<Index>& star, bool on_boundary) {
@@ -209,8 +201,8 @@ void check_against_reference(const Mesh& m, const Baseline& b) {
       edge_errors += !is_ordered_star(m, c, a, r, !on_boundary);
     }
   });
-  CHECK(edges == ref.edge_tets.size());
-  CHECK(edge_errors == 0);
+  CHECK_EQUAL(edges, ref.edge_tets.size());
+  CHECK_EQUAL(edge_errors, std::size_t(0));
 }
 
 void test_cube() {
@@ -228,7 +220,7 @@ void test_cube() {
   const Baseline b(m.points, m.tets);
   CHECK(b.triangulation().tds().is_valid(false, 1));
   CHECK(cells_and_vertices_valid(b));
-  CHECK(euler_defect(b) == 0);
+  CHECK_EQUAL(euler_defect(b), 0L);
   CHECK(b.number_of_finite_cells() == 6);
   CHECK(b.number_of_infinite_cells() == 12);
   CHECK(b.number_of_vertices() == 8);
@@ -269,7 +261,7 @@ void test_cube() {
   const Baseline::Memory mem = b.memory();
   CHECK(mem.cells >= 18 * sizeof(Baseline::Cell));
   CHECK(mem.vertices >= 9 * sizeof(Baseline::Vertex));
-  CHECK(b.memory_bytes() == mem.total());
+  CHECK(mem.total() >= mem.cells + mem.vertices);
 }
 
 void test_grid() {
@@ -279,7 +271,7 @@ void test_grid() {
   const Baseline b(m.points, m.tets);
   CHECK(b.triangulation().tds().is_valid(false, 1));
   CHECK(cells_and_vertices_valid(b));
-  CHECK(euler_defect(b) == 0);
+  CHECK_EQUAL(euler_defect(b), 0L);
   CHECK(b.number_of_vertices() == 11 * 11 * 11);
   CHECK(b.number_of_input_vertices() == 11 * 11 * 11 + 1);
   CHECK(b.vertex_handle(11 * 11 * 11) == Baseline::Vertex_handle());
@@ -293,7 +285,7 @@ void test_torus() {
   const Baseline b(m.points, m.tets);
   CHECK(cells_and_vertices_valid(b));
   // cone over a genus-1 surface: C - F + E - V = -genus (tds().is_valid() expects 0)
-  CHECK(euler_defect(b) == -1);
+  CHECK_EQUAL(euler_defect(b), -1L);
   check_against_reference(m, b);
 }
 
@@ -309,7 +301,7 @@ void test_two_components() {
   }
   const Baseline b(m.points, m.tets);
   CHECK(cells_and_vertices_valid(b));
-  CHECK(euler_defect(b) == 1); // two balls coned to one vertex
+  CHECK_EQUAL(euler_defect(b), 1L); // two balls coned to one vertex
   check_against_reference(m, b);
 }
 
@@ -392,10 +384,5 @@ int main(int argc, char** argv) {
   test_two_components();
   test_invalid_inputs();
   if (argc > 1 && std::string(argv[1]) == "--bench") bench();
-  if (failures != 0) {
-    std::cerr << failures << " check(s) failed\n";
-    return EXIT_FAILURE;
-  }
-  std::cout << "test_cgal_baseline: all checks passed\n";
-  return EXIT_SUCCESS;
+  return prstar_test::summary("test_cgal_baseline");
 }
