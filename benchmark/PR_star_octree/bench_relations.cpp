@@ -19,6 +19,7 @@
 #include <CGAL/PR_star_octree/Leaf_topology.h>
 #include <CGAL/PR_star_octree/boundary.h>
 #include <CGAL/PR_star_octree/distortion.h>
+#include <CGAL/property_map.h>
 
 #include <cmath>
 
@@ -58,14 +59,14 @@ using Index = std::uint32_t;
 struct Result {
   double build_seconds = 0;
   double vt_seconds = 0;
-  double distortion_seconds = 0;  // discrete distortion of every vertex (boundary test included)
-  double boundary_seconds = 0;    // boundary / interior classification of every vertex
+  double distortion_seconds = 0;     // discrete distortion of every vertex (boundary test included)
+  double boundary_seconds = 0;       // boundary / interior classification of every vertex
   double boundary_count_seconds = 0; // PR-star: the paper's count alone, without the link proof
-  double distortion_sum = 0;      // over manifold vertices: must agree across structures
-  std::size_t bytes = 0;          // the whole structure, V and T included
-  std::size_t overhead_bytes = 0; // the topological part only
-  std::size_t peak_rss_bytes = 0; // peak RSS growth during build + queries
-  std::size_t checksum = 0;       // sum over all VT of the star sizes (must agree across structures)
+  double distortion_sum = 0;         // over manifold vertices: must agree across structures
+  std::size_t bytes = 0;             // the whole structure, V and T included
+  std::size_t overhead_bytes = 0;    // the topological part only
+  std::size_t peak_rss_bytes = 0;    // peak RSS growth during build + queries
+  std::size_t checksum = 0;          // sum over all VT of the star sizes (must agree across structures)
   std::size_t checksum2 = 0;
   std::size_t nodes = 0, leaves = 0;
   double chi = 0, cost_overhead = 0, cost_total = 0;
@@ -117,21 +118,25 @@ Result run_prstar(const Mesh& mesh, std::size_t kv, int reps) {
                                         });
     r.checksum = sum;
   });
-  // Distortion and boundary: the field in the octree's order, as a user would store it.
-  const std::vector<double> f_input = field_values(mesh);
-  std::vector<double> f(f_input.size());
-  for (Index v = 0; v < f.size(); ++v) f[v] = f_input[tree->original_vertex(v)];
+  // Distortion and boundary through the public API: the field and the results in the user's order.
+  namespace params = CGAL::PR_star_octree::parameters;
+  const std::vector<double> f = field_values(mesh);
+  std::vector<CGAL::PR_star_octree::Vertex_curvature> curvature(mesh.points.size());
   r.distortion_seconds = best_of(reps, [&] {
-    const auto c = CGAL::PR_star_octree::compute_curvature(*tree, [&](Index v) { return f[v]; });
-    r.distortion_sum = manifold_sum(c);
+    CGAL::PR_star_octree::compute_curvature(*tree, CGAL::make_property_map(f),
+                                            CGAL::make_property_map(curvature));
+    r.distortion_sum = manifold_sum(curvature);
   });
+  std::vector<CGAL::PR_star_octree::Vertex_type> types(mesh.points.size());
   r.boundary_seconds = best_of(reps, [&] {
-    const auto b = CGAL::PR_star_octree::compute_boundary(*tree, false);
-    if (b.vertex_type.empty() && mesh.points.size()) r.ok = false;
+    const auto b = CGAL::PR_star_octree::compute_boundary(*tree, CGAL::make_property_map(types),
+                                                          params::with_boundary_triangles(false));
+    if (b.unreferenced_vertices == mesh.points.size() && mesh.points.size()) r.ok = false;
   });
   r.boundary_count_seconds = best_of(reps, [&] {
-    const auto b = CGAL::PR_star_octree::compute_boundary(*tree, false, false);
-    if (b.vertex_type.empty() && mesh.points.size()) r.ok = false;
+    const auto b = CGAL::PR_star_octree::compute_boundary(
+        *tree, CGAL::make_property_map(types), params::with_boundary_triangles(false).check_links(false));
+    if (b.unreferenced_vertices == mesh.points.size() && mesh.points.size()) r.ok = false;
   });
   return r;
 }

@@ -52,12 +52,9 @@ struct Result {
 Result run_in_child(const Mesh& mesh, std::size_t kv, double target, int reps) {
   return prstar_bench::in_child<Result>([&] {
     Result r;
-    P::Simplification_options o;
-    o.target_fraction = target;
-    o.bucket_size = kv;
     r.seconds = std::numeric_limits<double>::infinity();
     for (int i = 0; i < reps; ++i) {
-      const auto res = P::simplify(mesh, o);
+      const auto res = P::simplify(mesh, P::parameters::target_fraction(target).bucket_size(kv));
       const auto& s = res.statistics;
       r.seconds = std::min(r.seconds, s.seconds);
       r.removed = s.removed_tetrahedra;

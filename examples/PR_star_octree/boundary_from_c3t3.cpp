@@ -10,8 +10,12 @@
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/Mesh_complex_3_input.h>
 #include <CGAL/PR_star_octree/boundary.h>
+#include <CGAL/property_map.h>
 
+#include <array>
 #include <iostream>
+#include <iterator>
+#include <vector>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Domain = CGAL::Labeled_mesh_domain_3<K>;
@@ -29,17 +33,24 @@ int main() {
 
   // The adapter iterates the cells in the complex only; vertices are numbered as first met.
   const auto input = CGAL::PR_star_octree::make_input(c3t3);
-  CGAL::PR_star_octree_3<K> octree(input, 50);
-  const auto boundary = CGAL::PR_star_octree::compute_boundary(octree);
+  CGAL::PR_star_octree_3<K> octree(input, CGAL::PR_star_octree::parameters::bucket_size(50));
+
+  // The type of every vertex, in the adapter's numbering (the order of `input`), and the boundary
+  // triangles oriented outward.
+  std::vector<CGAL::PR_star_octree::Vertex_type> types(input.number_of_vertices());
+  std::vector<std::array<std::size_t, 3>> triangles;
+  const auto boundary = CGAL::PR_star_octree::compute_boundary(
+      octree, CGAL::make_property_map(types),
+      CGAL::PR_star_octree::parameters::boundary_triangles_output(std::back_inserter(triangles)));
 
   std::cout << input.number_of_tetrahedra() << " tetrahedra, " << boundary.boundary_vertices
-            << " boundary and " << boundary.interior_vertices << " interior vertices, "
-            << boundary.boundary_triangles.size() << " boundary triangles\n";
+            << " boundary and " << boundary.interior_vertices << " interior vertices, " << triangles.size()
+            << " boundary triangles\n";
   // Back to CGAL's handles: the flag of each vertex of the complex.
   std::size_t on_boundary = 0;
-  for (std::size_t v = 0; v < octree.number_of_vertices(); ++v)
-    if (boundary.is_boundary(static_cast<std::uint32_t>(v)))
-      on_boundary += (input.vertex_handle(octree.original_vertex(static_cast<std::uint32_t>(v))) != nullptr);
+  for (std::size_t v = 0; v < types.size(); ++v)
+    if (types[v] == CGAL::PR_star_octree::Vertex_type::BOUNDARY)
+      on_boundary += (input.vertex_handle(v) != nullptr);
   std::cout << on_boundary << " vertex handles flagged as boundary\n";
   return boundary.nonmanifold_vertices == 0 ? 0 : 1;
 }

@@ -2,6 +2,7 @@
 // cubes, each cut into six tetrahedra; interior vertices get the distortion of the lifted mesh.
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/distortion.h>
+#include <CGAL/property_map.h>
 
 #include <array>
 #include <iostream>
@@ -29,27 +30,29 @@ int main() {
       }
 
   CGAL::PR_star_octree_3<Kernel> octree(CGAL::PR_star_octree::make_input(points, tetrahedra), 20);
-  // Any functor from an octree vertex to a double is a field.
-  auto field = [&](std::uint32_t v) {
-    const Point& p = octree.point(v);
-    return p.x() * p.x() + p.y() * p.y() + p.z() * p.z();
-  };
-  const auto curvature = CGAL::PR_star_octree::compute_curvature(octree, field);
+  // A field is a property map from the user's vertex index to a double.
+  std::vector<double> field(points.size());
+  for (std::size_t v = 0; v < points.size(); ++v)
+    field[v] = points[v].x() * points[v].x() + points[v].y() * points[v].y() + points[v].z() * points[v].z();
+  std::vector<CGAL::PR_star_octree::Vertex_curvature> curvature(points.size());
+  CGAL::PR_star_octree::compute_curvature(octree, CGAL::make_property_map(field),
+                                          CGAL::make_property_map(curvature));
 
   // The centre of the grid, in the user's numbering, and its distortion.
-  const std::uint32_t centre = static_cast<std::uint32_t>(id(n / 2, n / 2, n / 2));
-  for (std::uint32_t v = 0; v < octree.number_of_vertices(); ++v)
-    if (octree.original_vertex(v) == centre)
-      std::cout << "distortion at the centre: " << curvature[v].distortion
-                << " (interior: " << (curvature[v].type == CGAL::PR_star_octree::Vertex_type::INTERIOR)
-                << ")\n";
+  const std::size_t centre = static_cast<std::size_t>(id(n / 2, n / 2, n / 2));
+  std::cout << "distortion at the centre: " << curvature[centre].distortion
+            << " (interior: " << (curvature[centre].type == CGAL::PR_star_octree::Vertex_type::INTERIOR)
+            << ")\n";
   // A linear field has no distortion at interior vertices.
-  const auto flat =
-      CGAL::PR_star_octree::compute_curvature(octree, CGAL::PR_star_octree::coordinate_field(octree, 0));
+  std::vector<double> distortion(points.size());
+  std::vector<CGAL::PR_star_octree::Vertex_type> types(points.size());
+  CGAL::PR_star_octree::compute_discrete_distortion(
+      octree, CGAL::PR_star_octree::coordinate_field_map(octree, 0), CGAL::make_property_map(distortion),
+      CGAL::PR_star_octree::parameters::vertex_type_map(CGAL::make_property_map(types)));
   double worst = 0;
-  for (const auto& c : flat)
-    if (c.type == CGAL::PR_star_octree::Vertex_type::INTERIOR)
-      worst = std::max(worst, std::abs(c.distortion));
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if (types[v] == CGAL::PR_star_octree::Vertex_type::INTERIOR)
+      worst = std::max(worst, std::abs(distortion[v]));
   std::cout << "largest |distortion| of the field x at interior vertices: " << worst << '\n';
   return worst < 1e-9 ? 0 : 1;
 }

@@ -30,10 +30,10 @@ int main(int argc, char** argv) {
                     params::cell_radius_edge_ratio = 3, params::cell_size = 0.15);
   C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria);
 
-  CGAL::PR_star_octree::Simplification_options options;
-  options.target_fraction = 0.5; // remove half of the tetrahedra
-  options.bucket_size = 100;     // k_v
-  const auto result = CGAL::PR_star_octree::simplify(CGAL::PR_star_octree::make_input(c3t3), options);
+  // Remove half of the tetrahedra, with k_v = 100.
+  const auto result =
+      CGAL::PR_star_octree::simplify(CGAL::PR_star_octree::make_input(c3t3),
+                                     CGAL::PR_star_octree::parameters::target_fraction(0.5).bucket_size(100));
   const auto& s = result.statistics;
   std::cout << s.input_tetrahedra << " -> " << s.output_tetrahedra << " tetrahedra in " << s.rounds
             << " rounds\n";

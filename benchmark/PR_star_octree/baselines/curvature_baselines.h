@@ -38,7 +38,7 @@ Vertex_curvature curvature_from_star(const Points& points, const Tets& tets, con
       f[i] = field(c[i]);
       if (c[i] == v) k = i;
     }
-    const auto a = CGAL::PR_star_octree::corner_solid_angles(p, f, k);
+    const auto a = CGAL::PR_star_octree::internal::corner_solid_angles(p, f, k);
     s3 += a.first;
     s4 += a.second;
   }
