@@ -3,8 +3,12 @@
 \cgalConcept
 
 The concept `PRStarOctreeTraits` describes the geometric traits class of
-`CGAL::PR_star_octree_3`: a point type with Cartesian coordinates, used to build the PR octree,
-and an exact orientation predicate, used to orient every tetrahedron positively.
+`CGAL::PR_star_octree_3` and of the applications built on it: a point type, functors giving its
+Cartesian coordinates (used to build the PR octree, its boxes, and the solid angles of the discrete
+distortion), the squared distance between two points (the edge lengths of the simplification), and
+an exact orientation predicate (used to orient every tetrahedron positively, to check validity and
+to test the geometric condition of a collapse).  The package reaches the geometry only through these
+functors, so a traits class with a point type of its own works through every application.
 
 The requirements are checked at compile time: a class that misses one of them is rejected with a
 `static_assert` naming the missing type or function.
@@ -21,16 +25,41 @@ public:
   /// @{
 
   /*!
-  The number type of the coordinates.
+  The number type of the coordinates, convertible to `double` with `CGAL::to_double()`.
   */
   typedef unspecified_type FT;
 
   /*!
-  The point type.  It provides `x()`, `y()` and `z()`, whose values are converted to `double` with
-  `CGAL::to_double()` to build the octree (the cube of the root, the split planes); it is
-  constructible from three `double`s when the points of the input mesh are of another type.
+  The point type in which the octree stores the points of the mesh.
   */
   typedef unspecified_type Point_3;
+
+  /*!
+  A model of `Kernel::ConstructPoint_3` with the operator
+  `Point_3 operator()(double x, double y, double z)`: makes a `Point_3` from the `x()`, `y()`,
+  `z()` of an input point of another type.  Only needed when the points of the input mesh are not
+  convertible to `Point_3`.
+  */
+  typedef unspecified_type Construct_point_3;
+
+  /*!
+  Models of `Kernel::ComputeX_3`, `Kernel::ComputeY_3` and `Kernel::ComputeZ_3`: functors with the
+  operator `FT operator()(const Point_3& p)` returning a Cartesian coordinate of `p`.  The values,
+  converted to `double`, build the octree (the cube of the root, the split planes) and the
+  geometry of the applications.
+  */
+  typedef unspecified_type Compute_x_3;
+  /// \copydoc Compute_x_3
+  typedef unspecified_type Compute_y_3;
+  /// \copydoc Compute_x_3
+  typedef unspecified_type Compute_z_3;
+
+  /*!
+  A model of `Kernel::ComputeSquaredDistance_3` with the operator
+  `FT operator()(const Point_3& p, const Point_3& q)`: the squared distance of `p` and `q`, used for
+  the edge lengths of `CGAL::PR_star_octree::simplify()`.
+  */
+  typedef unspecified_type Compute_squared_distance_3;
 
   /*!
   A model of `Kernel::Orientation_3`: a functor with the operator
@@ -40,7 +69,8 @@ public:
   on the negative side and `CGAL::COPLANAR` otherwise.
 
   The predicate should be exact: it decides which input tetrahedra are reoriented and which are
-  reported as degenerate (zero volume) in the statistics.
+  reported as degenerate (zero volume) in the statistics, which tetrahedra `check_validity()`
+  reports as inverted or flat, and whether a collapse would flip a tetrahedron.
   */
   typedef unspecified_type Orientation_3;
 
@@ -48,6 +78,26 @@ public:
 
   /// \name Operations
   /// @{
+
+  /*!
+  returns the point construction functor.
+  */
+  Construct_point_3 construct_point_3_object() const;
+
+  /*!
+  returns the functor giving the x coordinate (likewise `compute_y_3_object()` and
+  `compute_z_3_object()`).
+  */
+  Compute_x_3 compute_x_3_object() const;
+  /// returns the functor giving the y coordinate.
+  Compute_y_3 compute_y_3_object() const;
+  /// returns the functor giving the z coordinate.
+  Compute_z_3 compute_z_3_object() const;
+
+  /*!
+  returns the squared distance functor.
+  */
+  Compute_squared_distance_3 compute_squared_distance_3_object() const;
 
   /*!
   returns the orientation predicate.
