@@ -18,7 +18,7 @@ struct Memory_bytes {
   std::size_t scalars = 0;         ///< V: the optional scalar field
   std::size_t tetrahedra = 0;      ///< T: four indices per tetrahedron
   std::size_t nodes = 0;           ///< N: the octree nodes and the list of leaves
-  std::size_t leaf_tetrahedra = 0; ///< the leaf lists of incident tetrahedra (chi |T| indices)
+  std::size_t leaf_tetrahedra = 0; ///< the shared parts of the leaf lists: (chi - 1) |T| indices
   std::size_t permutations = 0;    ///< new -> original numbering of V and T, reorientation bits
 
   /// the topological overhead of the PR-star octree: nodes and leaf lists
@@ -32,7 +32,8 @@ struct Memory_bytes {
 /// The storage statistics of paper Table 1, plus what the construction noticed about the mesh.
 ///
 /// The cost model counts machine words, in multiples of |V| (paper Section 5):
-/// - PR-star overhead `chi |T| + 7 |N|`, total `(4 + chi) |T| + 3 |V| + 7 |N|`;
+/// - PR-star overhead `chi |T| + 7 |N|`, total `(4 + chi) |T| + 3 |V| + 7 |N|` (the paper's model,
+///   with full leaf lists; `bytes` is what this implementation really holds);
 /// - extended IA overhead `4 |T| + |V|`, total `8 |T| + 4 |V|`.
 struct Statistics {
   std::size_t vertices = 0;
@@ -46,7 +47,7 @@ struct Statistics {
   std::size_t depth = 0;
   std::size_t max_leaf_vertices = 0;
   std::size_t max_leaf_tetrahedra = 0;
-  std::size_t leaf_tetrahedra_entries = 0; ///< sum of the leaf list sizes = chi |T|
+  std::size_t leaf_tetrahedra_entries = 0; ///< sum of the leaf list sizes, owned ranges included = chi |T|
   double chi = 0;                          ///< average number of leaves per tetrahedron
 
   std::size_t depth_limited_leaves = 0;  ///< leaves over k_v because the depth bound was reached
