@@ -33,7 +33,8 @@ public:
   /*!
   returns the point of vertex `i`, for `0 <= i < number_of_vertices()`.  The point type provides
   `x()`, `y()`, `z()` convertible with `CGAL::to_double()`; it is either convertible to the
-  `Point_3` type of the traits or converted through its three `double` coordinates.  The
+  `Point_3` type of the traits or made from its three coordinates, converted to `double`, by the
+  traits' `construct_point_3_object()`.  The
   coordinates must be finite.
   */
   unspecified_type point(std::size_t i) const;
