@@ -196,11 +196,36 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
   using Octree = PR_star_octree_3<GT, I>;
   Vertex_type_counts counts;
   Vertex_classifier<Octree> classifier;
+  std::vector<double> s3, s4;
   for_each_leaf(
       tree, VERTEX_TETRAHEDRA,
       [&](const Leaf_topology<Octree>& local) {
-        for (I v = local.vertex_begin(); v < local.vertex_end(); ++v) {
-          const Vertex_curvature c = internal::vertex_curvature(local, field, classifier, v);
+        // Each tetrahedron of the leaf once: its coordinates and field values are read once for
+        // all its corners in the leaf.  The leaf's list is in increasing order, as every star, so
+        // each vertex sums its corners in the same order as `vertex_curvature()`.
+        const I vb = local.vertex_begin();
+        const std::size_t nv = local.vertex_end() - vb;
+        s3.assign(nv, 0.);
+        s4.assign(nv, 0.);
+        std::array<std::array<double, 3>, 4> p;
+        std::array<double, 4> f;
+        for (I t : local.tetrahedra()) {
+          const auto& c = tree.tetrahedron(t);
+          for (int i = 0; i < 4; ++i) {
+            p[i] = tree.coordinates(tree.point(c[i]));
+            f[i] = internal::field_value(tree, field, c[i]);
+          }
+          for (int k = 0; k < 4; ++k) {
+            const std::size_t i = static_cast<I>(c[k] - vb);
+            if (i >= nv) continue;
+            const auto a = internal::corner_solid_angles(p, f, k);
+            s3[i] += a.first;
+            s4[i] += a.second;
+          }
+        }
+        for (std::size_t i = 0; i < nv; ++i) {
+          const I v = static_cast<I>(vb + i);
+          const Vertex_curvature c = internal::finish_curvature(s3[i], s4[i], classifier.classify(local, v));
           counts.add(c.type);
           put(curvature_map, static_cast<std::size_t>(tree.original_vertex(v)), c);
         }
