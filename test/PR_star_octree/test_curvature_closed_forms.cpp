@@ -12,6 +12,7 @@
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/distortion.h>
+#include <CGAL/property_map.h>
 
 #include "test_harness.h"
 
@@ -109,12 +110,33 @@ std::vector<Expected> expected_by_girard(const Mesh& m, const std::vector<double
   return e;
 }
 
-// The library's curvature of every vertex, in the user's numbering (public API only).
+// The library's curvature of every vertex, in the user's numbering (public API only: property maps
+// keyed by the user's vertex index).
 std::vector<Vertex_curvature> library_curvature(const Octree& tree, const std::vector<double>& values) {
-  const auto c =
-      CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::original_order_field(tree, values));
-  std::vector<Vertex_curvature> out(c.size());
-  for (std::size_t v = 0; v < c.size(); ++v) out[tree.original_vertex(static_cast<Octree::Index>(v))] = c[v];
+  std::vector<Vertex_curvature> out(tree.number_of_vertices());
+  const auto counts = CGAL::PR_star_octree::compute_curvature(tree, CGAL::make_property_map(values),
+                                                              CGAL::make_property_map(out));
+  // The counts returned are those of the types written.
+  std::size_t interior = 0, boundary = 0;
+  for (const auto& c : out) {
+    interior += c.type == Vertex_type::INTERIOR;
+    boundary += c.type == Vertex_type::BOUNDARY;
+  }
+  CHECK_EQUAL(counts.interior_vertices, interior);
+  CHECK_EQUAL(counts.boundary_vertices, boundary);
+  // compute_discrete_distortion writes the same values into three maps.
+  std::vector<double> distortion(out.size(), -1), domain(out.size(), -1);
+  std::vector<Vertex_type> types(out.size(), Vertex_type::NONMANIFOLD);
+  namespace params = CGAL::PR_star_octree::parameters;
+  CGAL::PR_star_octree::compute_discrete_distortion(
+      tree, CGAL::make_property_map(values), CGAL::make_property_map(distortion),
+      params::domain_curvature_map(CGAL::make_property_map(domain))
+          .vertex_type_map(CGAL::make_property_map(types)));
+  for (std::size_t v = 0; v < out.size(); ++v) {
+    CHECK_EQUAL(distortion[v], out[v].distortion);
+    CHECK_EQUAL(domain[v], out[v].domain_curvature);
+    CHECK_EQUAL(types[v], out[v].type);
+  }
   return out;
 }
 
@@ -122,8 +144,7 @@ std::vector<Vertex_curvature> library_curvature(const Octree& tree, const std::v
 Vertex_curvature library_curvature_at(const Octree& tree, std::size_t user_vertex,
                                       const std::vector<double>& values) {
   const auto from = tree.vertex_from_original();
-  return CGAL::PR_star_octree::curvature_at(tree, from[user_vertex],
-                                            CGAL::PR_star_octree::original_order_field(tree, values));
+  return CGAL::PR_star_octree::curvature_at(tree, from[user_vertex], CGAL::make_property_map(values));
 }
 
 void check_vertex(const Vertex_curvature& got, const Expected& e, const std::string& what) {

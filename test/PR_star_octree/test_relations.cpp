@@ -13,12 +13,14 @@
 #include <CGAL/PR_star_octree/Leaf_topology.h>
 #include <CGAL/PR_star_octree/boundary.h>
 #include <CGAL/PR_star_octree/distortion.h>
+#include <CGAL/property_map.h>
 
 #include <cmath>
 
 #include "baselines/Cgal_triangulation_baseline.h"
 #include "baselines/Extended_IA.h"
 #include "baselines/curvature_baselines.h"
+#include "test_harness.h"
 
 #include <algorithm>
 #include <iostream>
@@ -26,19 +28,9 @@
 #include <memory>
 #include <set>
 #include <string>
-#include <sys/stat.h>
 #include <vector>
 
 namespace {
-
-int failures = 0;
-#define CHECK(cond)                                                                                          \
-  do {                                                                                                       \
-    if (!(cond)) {                                                                                           \
-      ++failures;                                                                                            \
-      if (failures < 50) std::cerr << __FILE__ << ":" << __LINE__ << ": CHECK failed: " #cond << std::endl;  \
-    }                                                                                                        \
-  } while (0)
 
 using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
 using Octree = CGAL::PR_star_octree_3<>;
@@ -47,11 +39,6 @@ using Index = std::uint32_t;
 using Face = std::array<Index, 3>;
 using EdgeKey = std::pair<Index, Index>;
 using CGAL::PR_star_octree::Vertex_curvature;
-
-bool exists(const std::string& f) {
-  struct stat st;
-  return ::stat(f.c_str(), &st) == 0;
-}
 
 // The brute-force truth, on the user's numbering.
 struct Truth {
@@ -241,11 +228,59 @@ bool same_star(std::vector<Index> a, const std::vector<Index>& b, bool closed) {
   return false;
 }
 
+// The random-access queries against brute force over all tetrahedra, for every vertex and every
+// tetrahedron of `tree`: vertex_star(tree, v) must be exactly the tetrahedra whose vertex list holds
+// v, in increasing order (one scan of the tree's whole tetrahedron array, octree numbering), and,
+// mapped back, the user's star of the vertex; tetrahedron_neighbors(tree, t)[k] the other
+// tetrahedron of the face opposite vertex k, no_neighbor on the boundary, one of the others at a
+// face of three or more tetrahedra.
+void check_random_access(const Octree& tree, const Truth& truth) {
+  const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
+  std::vector<std::vector<Index>> brute(nv);
+  for (Index t = 0; t < nt; ++t)
+    for (Index v : tree.tetrahedron(t)) brute[v].push_back(t); // increasing in t
+  std::size_t star_mismatches = 0, compared = 0;
+  for (Index v = 0; v < nv; ++v) {
+    std::vector<Index> r;
+    CGAL::PR_star_octree::vertex_star(tree, v, std::back_inserter(r));
+    CHECK_EQUAL(r, brute[v]);
+    star_mismatches += r != brute[v];
+    std::vector<Index> user;
+    for (Index t : r) user.push_back(tree.original_tetrahedron(t));
+    std::sort(user.begin(), user.end());
+    CHECK_EQUAL(user, truth.vt[tree.original_vertex(v)]);
+    compared += r.size();
+    if (star_mismatches > 5) break; // enough printed
+  }
+  CHECK_EQUAL(compared, 4 * nt);
+  for (Index t = 0; t < nt; ++t) {
+    const auto ra = CGAL::PR_star_octree::tetrahedron_neighbors(tree, t);
+    const auto& c = tree.tetrahedron(t);
+    for (int k = 0; k < 4; ++k) {
+      const Face f{{tree.original_vertex(c[(k + 1) & 3]), tree.original_vertex(c[(k + 2) & 3]),
+                    tree.original_vertex(c[(k + 3) & 3])}};
+      const auto* ft = truth.tets_of_face(f);
+      CHECK(ft != nullptr);
+      if (!ft) continue;
+      std::vector<Index> others;
+      for (Index u : *ft)
+        if (u != tree.original_tetrahedron(t)) others.push_back(u);
+      if (others.empty())
+        CHECK_EQUAL(ra[k], Local::no_neighbor);
+      else if (others.size() == 1)
+        CHECK_EQUAL(ra[k] == Local::no_neighbor ? ra[k] : tree.original_tetrahedron(ra[k]), others[0]);
+      else
+        CHECK(ra[k] != Local::no_neighbor &&
+              std::count(others.begin(), others.end(), tree.original_tetrahedron(ra[k])) == 1);
+    }
+  }
+}
+
 void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std::size_t>& kvs,
                 bool with_cgal) {
   Truth truth(mesh);
   truth.mesh = &mesh;
-  const int before = failures;
+  const prstar_test::Failure_context context(name);
 
   // Extended IA against the brute force.
   prstar_baselines::Extended_IA<Index> ia(mesh.points.size(), mesh.tetrahedra);
@@ -332,71 +367,119 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
     const auto ia_c = prstar_baselines::ia_curvature(mesh.points, mesh.tetrahedra, ia, field);
     std::vector<Vertex_curvature> cgal_c;
     if (with_cgal) cgal_c = prstar_baselines::cgal_curvature(mesh.points, mesh.tetrahedra, *cgal_ptr, field);
+    namespace params = CGAL::PR_star_octree::parameters;
+    // Brute-force counts of the tetrahedra touching the boundary.
+    std::set<Index> boundary_face_tets;
+    for (const auto& f : truth.faces)
+      if (f.second.size() == 1) boundary_face_tets.insert(f.second[0]);
     for (std::size_t kv : {std::size_t(3), std::size_t(64), Octree::infinite_bucket_size}) {
       Octree tree(CGAL::PR_star_octree::make_input(mesh), kv);
-      const auto b = CGAL::PR_star_octree::compute_boundary(tree);
-      CHECK(b.boundary_triangles.size() == truth.boundary_faces());
+      const std::size_t n = mesh.points.size();
+      // Everything below is in the user's numbering (property maps keyed by the input order).
+      std::vector<Vertex_type> types(n, Vertex_type::NONMANIFOLD);
+      std::vector<std::array<std::size_t, 3>> boundary_triangles;
+      const auto b = CGAL::PR_star_octree::compute_boundary(
+          tree, CGAL::make_property_map(types),
+          params::boundary_triangles_output(std::back_inserter(boundary_triangles)));
+      CHECK_EQUAL(b.boundary_triangles, truth.boundary_faces());
+      CHECK_EQUAL(boundary_triangles.size(), truth.boundary_faces());
+      CHECK_EQUAL(b.boundary_face_tetrahedra, boundary_face_tets.size());
+      // Each boundary triangle once, a face of one tetrahedron only, oriented outward: the fourth
+      // vertex of its tetrahedron lies on its negative side.
+      std::set<Face> seen_triangles;
+      for (const auto& tr : boundary_triangles) {
+        Face f{{Index(tr[0]), Index(tr[1]), Index(tr[2])}};
+        const auto* ft = truth.tets_of_face(f);
+        CHECK(ft != nullptr && ft->size() == 1);
+        if (!ft || ft->size() != 1) continue;
+        std::sort(f.begin(), f.end());
+        CHECK(seen_triangles.insert(f).second);
+        const auto& c = mesh.tetrahedra[(*ft)[0]];
+        Index apex = c[0];
+        for (Index x : c)
+          if (x != tr[0] && x != tr[1] && x != tr[2]) apex = x;
+        CHECK(CGAL::orientation(mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]],
+                                mesh.points[apex]) == CGAL::NEGATIVE);
+      }
       // The paper's count alone agrees wherever the link proof says the vertex is manifold.
-      const auto fast = CGAL::PR_star_octree::compute_boundary(tree, false, false);
-      for (Index v = 0; v < mesh.points.size(); ++v)
-        if (b.vertex_type[v] != Vertex_type::NONMANIFOLD) CHECK(fast.vertex_type[v] == b.vertex_type[v]);
-      const auto bits = CGAL::PR_star_octree::boundary_bit_array(tree, b);
-      const auto signed_t = CGAL::PR_star_octree::tetrahedra_with_boundary_signs(tree, b);
-      const auto curv = CGAL::PR_star_octree::compute_curvature(
-          tree, CGAL::PR_star_octree::original_order_field(tree, values));
-      const auto linear =
-          CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::coordinate_field(tree, 1));
-      for (Index v = 0; v < mesh.points.size(); ++v) {
-        const Index o = tree.original_vertex(v);
+      std::vector<Vertex_type> fast(n, Vertex_type::UNREFERENCED);
+      const auto fb = CGAL::PR_star_octree::compute_boundary(
+          tree, CGAL::make_property_map(fast), params::check_links(false).with_boundary_triangles(false));
+      CHECK_EQUAL(fb.boundary_triangles, std::size_t(0));
+      for (Index o = 0; o < n; ++o)
+        if (types[o] != Vertex_type::NONMANIFOLD) CHECK_EQUAL(fast[o], types[o]);
+      std::vector<Vertex_curvature> curv(n), linear(n);
+      CGAL::PR_star_octree::compute_curvature(tree, CGAL::make_property_map(values),
+                                              CGAL::make_property_map(curv));
+      CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::coordinate_field_map(tree, 1),
+                                              CGAL::make_property_map(linear));
+      CGAL::PR_star_octree::Vertex_type_counts expected_counts;
+      std::size_t touching = 0;
+      for (Index o = 0; o < n; ++o) {
         const Vertex_type expected = truth.vt[o].empty()                  ? Vertex_type::UNREFERENCED
                                      : !truth.is_manifold_vertex(mesh, o) ? Vertex_type::NONMANIFOLD
                                      : on_boundary_face[o]                ? Vertex_type::BOUNDARY
                                                                           : Vertex_type::INTERIOR;
-        CHECK(b.vertex_type[v] == expected);
-        CHECK(bits[o] == (expected == Vertex_type::BOUNDARY));
+        expected_counts.add(expected);
+        CHECK_EQUAL(types[o], expected);
+        CHECK_EQUAL(curv[o].type, expected);
         if (expected == Vertex_type::INTERIOR || expected == Vertex_type::BOUNDARY) {
-          CHECK(bool(ia_b[o]) == (expected == Vertex_type::BOUNDARY));
-          if (with_cgal) CHECK(cgal_ptr->is_boundary_vertex(o) == (expected == Vertex_type::BOUNDARY));
+          CHECK_EQUAL(bool(ia_b[o]), expected == Vertex_type::BOUNDARY);
+          if (with_cgal) CHECK_EQUAL(cgal_ptr->is_boundary_vertex(o), expected == Vertex_type::BOUNDARY);
           // Distortion equal across PR-star, IA and CGAL.
-          CHECK(std::abs(curv[v].distortion - ia_c[o].distortion) <= 1e-9);
-          CHECK(std::abs(curv[v].domain_curvature - ia_c[o].domain_curvature) <= 1e-9);
-          if (with_cgal) CHECK(std::abs(curv[v].distortion - cgal_c[o].distortion) <= 1e-9);
+          CHECK_NEAR(curv[o].distortion, ia_c[o].distortion, 1e-9);
+          CHECK_NEAR(curv[o].domain_curvature, ia_c[o].domain_curvature, 1e-9);
+          if (with_cgal) CHECK_NEAR(curv[o].distortion, cgal_c[o].distortion, 1e-9);
           // A linear field does not bend the lifted mesh: zero distortion at interior vertices.
-          if (expected == Vertex_type::INTERIOR) CHECK(std::abs(linear[v].distortion) <= 1e-9);
+          if (expected == Vertex_type::INTERIOR) CHECK_NEAR(linear[o].distortion, 0.0, 1e-9);
         } else if (expected == Vertex_type::NONMANIFOLD)
-          CHECK(std::isnan(curv[v].distortion));
+          CHECK(std::isnan(curv[o].distortion));
       }
-      for (std::size_t t = 0; t < signed_t.size(); ++t)
-        for (int k = 0; k < 4; ++k) {
-          const auto x = signed_t[t][k];
-          CHECK(CGAL::PR_star_octree::decode_vertex(x) == tree.tetrahedron(static_cast<Index>(t))[k]);
-          CHECK(CGAL::PR_star_octree::is_encoded_boundary(x) ==
-                (b.vertex_type[tree.tetrahedron(static_cast<Index>(t))[k]] == Vertex_type::BOUNDARY));
+      for (const auto& c : mesh.tetrahedra)
+        touching += std::any_of(c.begin(), c.end(), [&](Index x) {
+          return types[x] == Vertex_type::BOUNDARY || types[x] == Vertex_type::NONMANIFOLD;
+        });
+      CHECK_EQUAL(b.boundary_tetrahedra, touching);
+      CHECK_EQUAL(b.interior_vertices, expected_counts.interior_vertices);
+      CHECK_EQUAL(b.boundary_vertices, expected_counts.boundary_vertices);
+      CHECK_EQUAL(b.nonmanifold_vertices, expected_counts.nonmanifold_vertices);
+      CHECK_EQUAL(b.unreferenced_vertices, expected_counts.unreferenced_vertices);
+      // Random access and box queries give the same values as the streaming computation (NaN
+      // where it has NaN), and the IA baseline's where the vertex is manifold.
+      auto same = [](double a, double b) { return std::isnan(a) ? std::isnan(b) : a == b; };
+      auto check_one = [&](Index v, const Vertex_curvature& one) {
+        const Index o = tree.original_vertex(v);
+        CHECK_EQUAL(one.type, curv[o].type);
+        CHECK(same(one.distortion, curv[o].distortion));
+        CHECK(same(one.domain_curvature, curv[o].domain_curvature));
+        if (one.type == Vertex_type::INTERIOR || one.type == Vertex_type::BOUNDARY) {
+          CHECK_NEAR(one.distortion, ia_c[o].distortion, 1e-9);
+          CHECK_NEAR(one.domain_curvature, ia_c[o].domain_curvature, 1e-9);
         }
-      // Random access and box queries give the same values as the streaming computation.
-      for (Index v = 0; v < mesh.points.size(); v += 97) {
-        const auto one = CGAL::PR_star_octree::curvature_at(
-            tree, v, CGAL::PR_star_octree::original_order_field(tree, values));
-        CHECK(one.type == curv[v].type &&
-              (std::isnan(one.distortion) || one.distortion == curv[v].distortion));
-      }
+      };
+      std::size_t random_access = 0;
+      for (Index v = 0; v < mesh.points.size(); v += 97, ++random_access)
+        check_one(v, CGAL::PR_star_octree::curvature_at(tree, v, CGAL::make_property_map(values)));
+      CHECK(random_access > 0);
       std::vector<std::pair<Index, Vertex_curvature>> in_box;
       const auto bb = tree.bbox();
       const CGAL::Bbox_3 box(bb.xmin(), bb.ymin(), bb.zmin(), (bb.xmin() + bb.xmax()) / 2, bb.ymax(),
                              bb.zmax());
-      CGAL::PR_star_octree::curvature_in_box(
-          tree, box, CGAL::PR_star_octree::original_order_field(tree, values), in_box);
+      CGAL::PR_star_octree::curvature_in_box(tree, box, CGAL::make_property_map(values), in_box);
       std::size_t expected_in_box = 0;
       for (Index v = 0; v < mesh.points.size(); ++v) expected_in_box += tree.point(v).x() <= box.xmax();
-      CHECK(in_box.size() == expected_in_box);
-      for (const auto& e : in_box)
-        CHECK(e.second.type == curv[e.first].type &&
-              (std::isnan(e.second.distortion) || e.second.distortion == curv[e.first].distortion));
+      CHECK_EQUAL(in_box.size(), expected_in_box);
+      CHECK(expected_in_box > 0);
+      for (const auto& e : in_box) {
+        CHECK(tree.point(e.first).x() <= box.xmax());
+        check_one(e.first, e.second);
+      }
     }
   }
 
   for (std::size_t kv : kvs) {
     Octree tree(CGAL::PR_star_octree::make_input(mesh), kv);
+    check_random_access(tree, truth);
     auto orig_v = [&](Index v) { return tree.original_vertex(v); };
     auto orig_t = [&](Index t) { return tree.original_tetrahedron(t); };
     std::size_t edges_owned = 0, triangles_owned = 0, boundary_owned = 0;
@@ -411,9 +494,6 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
         for (Index t : local.vertex_tetrahedra(v)) s.push_back(orig_t(t));
         std::sort(s.begin(), s.end());
         CHECK(s == truth.vt[orig_v(v)]);
-        std::vector<Index> r;
-        CGAL::PR_star_octree::vertex_star(tree, v, std::back_inserter(r));
-        CHECK(r.size() == s.size());
         CHECK(std::is_sorted(local.vertex_tetrahedra(v).begin(), local.vertex_tetrahedra(v).end()));
         // VV.
         std::set<Index> w;
@@ -440,7 +520,6 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
       for (std::size_t i = 0; i < tets.size(); ++i) {
         const Index t = tets[i];
         const auto& c = tree.tetrahedron(t);
-        const auto ra = CGAL::PR_star_octree::tetrahedron_neighbors(tree, t);
         for (int k = 0; k < 4; ++k) {
           const Face f{{orig_v(c[(k + 1) & 3]), orig_v(c[(k + 2) & 3]), orig_v(c[(k + 3) & 3])}};
           const auto* ft = truth.tets_of_face(f);
@@ -456,7 +535,6 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
             CHECK((got == Local::no_neighbor ? got : orig_t(got)) == expected);
           else
             CHECK(got == Local::unknown_neighbor);
-          CHECK((ra[k] == Local::no_neighbor ? ra[k] : orig_t(ra[k])) == expected);
         }
       }
       // Edges: stars as sets and as cyclic sequences, links, boundary flags, each owned once.
@@ -492,8 +570,8 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
         const auto lk = local.edge_link(e);
         CHECK(lk.size() == s.size() + (boundary ? 1 : 0));
         for (std::size_t i = 0; i < s.size() && lk.size() == s.size() + (boundary ? 1 : 0); ++i) {
-          const auto& c = tree.tetrahedron(local.edge_tetrahedra(e)[i]);
-          const Index x = lk[i], y = lk[(i + 1) % lk.size()];
+          const auto& c = tree.tetrahedron(local.edge_tetrahedra(e).begin()[i]);
+          const Index x = lk.begin()[i], y = lk.begin()[(i + 1) % lk.size()];
           CHECK(std::count(c.begin(), c.end(), x) == 1 && std::count(c.begin(), c.end(), y) == 1);
           // Right-hand rule around v0 -> v1: (v0, v1, x, y) positively oriented.
           CHECK(CGAL::orientation(tree.point(ed.v0), tree.point(ed.v1), tree.point(x), tree.point(y)) !=
@@ -541,14 +619,16 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
                 << " F=" << counts.triangles << " (boundary " << counts.boundary_triangles
                 << ") T=" << counts.tetrahedra << " Euler=" << counts.euler_characteristic() << "\n";
   }
-  if (failures != before) std::cerr << "  ... on " << name << std::endl;
 }
 
 } // namespace
 
+// test_curvature_closed_forms.cpp
+void test_curvature_closed_forms();
+
 int main(int argc, char** argv) {
-  const std::string generated = argc > 1 ? argv[1] : "";
-  const std::string shared = argc > 2 ? argv[2] : "";
+  const prstar_test::Data_folders data(argc, argv);
+  test_curvature_closed_forms();
   const std::vector<std::size_t> kvs = {1, 4, 20, 100, Octree::infinite_bucket_size};
 
   // Hand-checked: the cube in six tetrahedra, 19 edges, 18 triangles (12 on the boundary), Euler 1.
@@ -559,50 +639,49 @@ int main(int argc, char** argv) {
     for (std::size_t kv : kvs) {
       Octree tree(CGAL::PR_star_octree::make_input(cube), kv);
       const auto c = CGAL::PR_star_octree::count_simplices(tree);
-      CHECK(c.vertices == 8 && c.edges == 19 && c.triangles == 18 && c.boundary_triangles == 12 &&
-            c.tetrahedra == 6);
-      CHECK(c.euler_characteristic() == 1);
+      CHECK_EQUAL(c.vertices, std::size_t(8));
+      CHECK_EQUAL(c.edges, std::size_t(19));
+      CHECK_EQUAL(c.triangles, std::size_t(18));
+      CHECK_EQUAL(c.boundary_triangles, std::size_t(12));
+      CHECK_EQUAL(c.tetrahedra, std::size_t(6));
+      CHECK_EQUAL(c.euler_characteristic(), 1LL);
       // The diagonal (0,7) is the only interior edge: its star is the closed cycle of all 6.
+      std::size_t diagonals = 0, owned = 0;
       CGAL::PR_star_octree::for_each_leaf(tree, CGAL::PR_star_octree::EDGES, [&](const Local& local) {
         for (std::size_t e = 0; e < local.number_of_edges(); ++e) {
           const Index a = tree.original_vertex(local.edge(e).v0), b = tree.original_vertex(local.edge(e).v1);
           const bool diagonal = std::min(a, b) == 0 && std::max(a, b) == 7;
-          CHECK(local.is_boundary_edge(e) == !diagonal);
-          if (diagonal) CHECK(local.edge_tetrahedra(e).size() == 6 && local.edge_link(e).size() == 6);
+          owned += local.owns_edge(e);
+          CHECK_EQUAL(local.is_boundary_edge(e), !diagonal);
+          if (!diagonal) continue;
+          ++diagonals;
+          CHECK_EQUAL(local.edge_tetrahedra(e).size(), std::size_t(6));
+          CHECK_EQUAL(local.edge_link(e).size(), std::size_t(6));
         }
       });
+      CHECK(diagonals >= 1); // seen from the leaf of 0 and from the leaf of 7
+      CHECK_EQUAL(owned, std::size_t(19));
     }
     check_mesh(cube, "cube (6 tetrahedra)", kvs, true);
   }
 
   for (const char* name :
        {"sphere.mesh", "torus.mesh", "cube.mesh", "sphere_tetgen.mesh", "cube_tetgen.vtu"}) {
-    const std::string file = generated + "/" + name;
-    if (!exists(file)) {
-      std::cerr << "missing generated input " << file << "\n";
-      CHECK(false);
-      continue;
-    }
+    const auto file = data.generated_file(name);
+    if (!file) continue;
     Mesh mesh;
-    CGAL::PR_star_octree::IO::read_tetrahedral_mesh(file, mesh);
+    CGAL::PR_star_octree::IO::read_tetrahedral_mesh(*file, mesh);
     check_mesh(mesh, name, kvs, true);
   }
-  if (!shared.empty() && exists(shared)) {
+  if (data.report_shared()) {
     for (const char* name : {"spx_zsweep.off", "armadillo_sofa.vtu", "bunny_sofa.vtu", "skull_14k.off",
                              "t13_data.1.node", "part1.1.node"}) {
-      const std::string file = shared + "/" + name;
-      if (!exists(file)) continue;
+      const auto file = data.shared_file(name);
+      if (!file) continue;
       Mesh mesh;
-      CGAL::PR_star_octree::IO::read_tetrahedral_mesh(file, mesh);
+      CGAL::PR_star_octree::IO::read_tetrahedral_mesh(*file, mesh);
       check_mesh(mesh, name, kvs, true);
     }
-  } else
-    std::cout << "shared data not found: real-mesh checks skipped\n";
-
-  if (failures) {
-    std::cerr << failures << " check(s) failed\n";
-    return 1;
   }
-  std::cout << "test_relations: all checks passed\n";
-  return 0;
+  return prstar_test::summary("test_relations");
 }
