@@ -122,8 +122,10 @@ public:
   /// Builds the PR-star octree of `input`, a model of `PRStarOctreeInputMesh`
   /// (see `CGAL::PR_star_octree::make_input()`).
   ///
+  /// \param input the mesh
   /// \param bucket_size the bucket threshold `k_v` (at least 1), or `infinite_bucket_size`
   /// \param max_depth the depth bound that stops splitting (duplicate or extremely close points)
+  /// \param gt the geometric traits
   ///
   /// \throws std::invalid_argument if a tetrahedron has a vertex index out of range or twice, or if
   ///         the mesh does not fit in `IndexType`, or on a non-finite coordinate, or `bucket_size == 0`.

@@ -218,6 +218,9 @@ namespace PR_star_octree {
 /// relations `relations` (a combination of `Relations`), calls `f(const Leaf_topology<Octree>&)`,
 /// and discards them (the buffers are reused for the next leaf).
 ///
+/// \param tree the octree
+/// \param relations the relations to build (a combination of `Relations`)
+/// \param f called with each leaf's `Leaf_topology`
 /// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf.
 template <class GT, class I, class Function, class NP = parameters::Default_named_parameters>
 void for_each_leaf(const PR_star_octree_3<GT, I>& tree, unsigned relations, Function&& f,
@@ -292,6 +295,7 @@ struct Simplex_counts {
 /// \ingroup PkgPRStarOctreeRef
 /// Counts vertices, edges, triangles (and boundary triangles) and tetrahedra by streaming over the
 /// leaves: each simplex is counted by the leaf owning its smallest vertex.
+/// \param tree the octree
 /// \param np optional named parameters: `progress(F)` (see `for_each_leaf()`).
 template <class GT, class I, class NP = parameters::Default_named_parameters>
 Simplex_counts count_simplices(const PR_star_octree_3<GT, I>& tree,

@@ -142,6 +142,8 @@ void classify_vertices(const Octree& tree, bool with_triangles, std::vector<Vert
 /// `Vertex_type` of every vertex into `vertex_type_map`, keyed by the user's vertex numbering (the
 /// input order), and counts the boundary triangles and the tetrahedra touching the boundary.
 ///
+/// \param tree the octree of the mesh
+/// \param vertex_type_map receives the type of each vertex
 /// \tparam VertexTypeMap a model of `WritablePropertyMap` with key `std::size_t` (the user's vertex
 ///         index) and value `Vertex_type`, e.g. `CGAL::make_property_map(std::vector<Vertex_type>&)`
 /// \param np optional named parameters:

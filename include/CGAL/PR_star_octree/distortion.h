@@ -187,6 +187,9 @@ Vertex_curvature vertex_curvature(const Leaf_topology<Octree>& local, const Fiel
 ///         or e.g. `CGAL::make_property_map(values)` for a `std::vector<double>` in the user's order
 /// \tparam CurvatureMap a model of `WritablePropertyMap` with key `std::size_t` (the user's vertex
 ///         index) and value `Vertex_curvature`
+/// \param tree the octree of the mesh
+/// \param field the scalar field
+/// \param curvature_map receives the curvature of each vertex
 /// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf
 template <class GT, class I, class FieldMap, class CurvatureMap,
           class NP = parameters::Default_named_parameters>
@@ -239,6 +242,9 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
 /// (a `WritablePropertyMap` keyed by the user's vertex index, value `double`); see
 /// `compute_curvature()` for `FieldMap`.
 ///
+/// \param tree the octree of the mesh
+/// \param field the scalar field
+/// \param distortion_map receives the distortion of each vertex
 /// \param np optional named parameters: `domain_curvature_map(PMap)` receives the 3D concentrated
 /// curvature of the domain (value `double`), `vertex_type_map(PMap)` the `Vertex_type` of each
 /// vertex (both keyed by the user's vertex index); `progress(F)` as in `for_each_leaf()`

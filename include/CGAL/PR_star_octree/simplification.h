@@ -77,6 +77,7 @@ struct Edge_length_priority {
 /// `InputMesh` is a model of `PRStarOctreeInputMesh` (see `make_input()`); its scalar field, if
 /// any, is the output's point-data array "scalar".
 ///
+/// \param input the mesh (a model of `PRStarOctreeInputMesh`)
 /// \param np named parameters (at least one of `target_fraction` and `max_edge_length`):
 /// - `target_fraction(double)`: stop once this fraction of the input tetrahedra is removed (in
 ///   `(0, 1)`; default 0: no target)

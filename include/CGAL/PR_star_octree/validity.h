@@ -56,6 +56,7 @@ struct Validity_result {
 /// \ingroup PkgPRStarOctreeRef
 /// Checks the mesh of `tree` leaf by leaf (see `Validity_result`).  Memory beyond the octree: the
 /// local structure of the largest leaf and the boundary triangles.
+/// \param tree the octree of the mesh
 /// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf of
 /// each of the two passes (`total` is twice the number of leaves)
 template <class GT, class I, class NP = parameters::Default_named_parameters>
@@ -142,6 +143,8 @@ Validity_result check_validity(const PR_star_octree_3<GT, I>& tree,
 /// \ingroup PkgPRStarOctreeRef
 /// Checks a mesh given as index arrays (see `make_input()`): builds its PR-star octree and calls
 /// `check_validity(const PR_star_octree_3&, const NP&)`.
+/// \param points the vertices
+/// \param tetrahedra four vertex indices per tetrahedron
 /// \param np optional named parameters: `bucket_size` (default 50), `progress(F)`
 /// \throws std::invalid_argument as the `PR_star_octree_3` constructor (index out of range,
 /// a vertex twice in a tetrahedron, non-finite coordinate)
