@@ -45,7 +45,7 @@ rm -rf "$out/html"
 (cd "$out" && doxygen Doxyfile)
 
 log="$out/doxygen_warnings.log"
-count=$(grep -o 'warning:' "$log" | wc -l)
+count=$( (grep -o 'warning:' "$log" || true) | wc -l)
 echo "doxygen $(doxygen --version): $count warning(s); see $log"
 echo "HTML: $out/html/index.html"
 if [ "$check" = yes ] && [ "$count" -ne 0 ]; then
