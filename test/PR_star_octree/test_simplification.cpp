@@ -13,12 +13,13 @@
 #include <CGAL/PR_star_octree/simplification.h>
 #include <CGAL/PR_star_octree/validity.h>
 
-#include <sys/stat.h>
+#include "test_harness.h"
 
 #include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -32,32 +33,7 @@ using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
 using Octree = CGAL::PR_star_octree_3<>;
 using Tet = std::array<std::uint32_t, 4>;
 namespace P = CGAL::PR_star_octree;
-
-int failures = 0;
-
-#define CHECK(cond)                                                                                      \
-  do {                                                                                                   \
-    if (!(cond)) {                                                                                       \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond << std::endl;                 \
-      ++failures;                                                                                        \
-    }                                                                                                    \
-  } while (0)
-
-#define CHECK_EQ(a, b)                                                                                   \
-  do {                                                                                                   \
-    const auto va_ = (a);                                                                                \
-    const auto vb_ = (b);                                                                                \
-    if (!(va_ == vb_)) {                                                                                 \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #a " == " #b " (" << va_ << " vs " \
-                << vb_ << ")" << std::endl;                                                              \
-      ++failures;                                                                                        \
-    }                                                                                                    \
-  } while (0)
-
-bool exists(const std::string& f) {
-  struct stat st;
-  return ::stat(f.c_str(), &st) == 0;
-}
+namespace params = CGAL::PR_star_octree::parameters;
 
 // ---------------------------------------------------------------------------------------------
 // Brute force
@@ -93,7 +69,8 @@ Brute brute_force(const std::vector<Point>& pts, const std::vector<Tet>& tets) {
       ++faces[f];
     }
   }
-  b.euler = (long long)vertices.size() - (long long)edges.size() + (long long)faces.size() - (long long)tets.size();
+  b.euler =
+      (long long)vertices.size() - (long long)edges.size() + (long long)faces.size() - (long long)tets.size();
   std::vector<std::array<std::uint32_t, 3>> boundary;
   for (const auto& f : faces) {
     b.nonmanifold_triangles += f.second > 2;
@@ -140,15 +117,16 @@ void test_validity_hand_made() {
       x[p[s]] = 1;
       c[s + 1] = id(x[0], x[1], x[2]);
     }
-    if (CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]) == CGAL::NEGATIVE) std::swap(c[2], c[3]);
+    if (CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]) == CGAL::NEGATIVE)
+      std::swap(c[2], c[3]);
     tets.push_back(c);
   }
   {
     const auto r = P::check_validity(pts, tets);
     CHECK(r.valid);
-    CHECK_EQ(r.euler_characteristic, 1LL);
-    CHECK_EQ(r.boundary_components, std::size_t(1));
-    CHECK_EQ(r.boundary_triangles, std::size_t(12));
+    CHECK_EQUAL(r.euler_characteristic, 1LL);
+    CHECK_EQUAL(r.boundary_components, std::size_t(1));
+    CHECK_EQUAL(r.boundary_triangles, std::size_t(12));
   }
 
   // A separate tetrahedron, listed inverted.
@@ -173,36 +151,36 @@ void test_validity_hand_made() {
   tets.push_back(Tet{{id(0, 0, 0), id(1, 0, 0), id(1, 1, 0), d + 1}});
 
   const Brute b = brute_force(pts, tets);
-  const auto r = P::check_validity(pts, tets, 3);
+  const auto r = P::check_validity(pts, tets, params::bucket_size(3));
   CHECK(!r.valid);
-  CHECK_EQ(r.tetrahedra, tets.size());
-  CHECK_EQ(r.positive, b.positive);
-  CHECK_EQ(r.negative, b.negative);
-  CHECK_EQ(r.degenerate, b.flat);
-  CHECK_EQ(r.degenerate, std::size_t(1));
-  CHECK_EQ(r.inverted, std::min(b.positive, b.negative));
+  CHECK_EQUAL(r.tetrahedra, tets.size());
+  CHECK_EQUAL(r.positive, b.positive);
+  CHECK_EQUAL(r.negative, b.negative);
+  CHECK_EQUAL(r.degenerate, b.flat);
+  CHECK_EQUAL(r.degenerate, std::size_t(1));
+  CHECK_EQUAL(r.inverted, std::min(b.positive, b.negative));
   CHECK(r.inverted >= 1);
-  CHECK_EQ(r.nonmanifold_triangles, b.nonmanifold_triangles);
+  CHECK_EQUAL(r.nonmanifold_triangles, b.nonmanifold_triangles);
   CHECK(r.nonmanifold_triangles >= 1);
   CHECK(r.nonmanifold_vertices >= 3); // at least the vertices of the triangle in three tetrahedra
-  CHECK_EQ(r.euler_characteristic, b.euler);
-  CHECK_EQ(r.boundary_components, b.boundary_components);
+  CHECK_EQUAL(r.euler_characteristic, b.euler);
+  CHECK_EQUAL(r.boundary_components, b.boundary_components);
   // Same answers whatever k_v.
-  const auto r1 = P::check_validity(pts, tets, Octree::infinite_bucket_size);
-  CHECK_EQ(r1.inverted, r.inverted);
-  CHECK_EQ(r1.degenerate, r.degenerate);
-  CHECK_EQ(r1.nonmanifold_triangles, r.nonmanifold_triangles);
-  CHECK_EQ(r1.nonmanifold_vertices, r.nonmanifold_vertices);
-  CHECK_EQ(r1.euler_characteristic, r.euler_characteristic);
-  CHECK_EQ(r1.boundary_components, r.boundary_components);
+  const auto r1 = P::check_validity(pts, tets, params::bucket_size(Octree::infinite_bucket_size));
+  CHECK_EQUAL(r1.inverted, r.inverted);
+  CHECK_EQUAL(r1.degenerate, r.degenerate);
+  CHECK_EQUAL(r1.nonmanifold_triangles, r.nonmanifold_triangles);
+  CHECK_EQUAL(r1.nonmanifold_vertices, r.nonmanifold_vertices);
+  CHECK_EQUAL(r1.euler_characteristic, r.euler_characteristic);
+  CHECK_EQUAL(r1.boundary_components, r.boundary_components);
 
   // All tetrahedra listed negatively: consistent (the other convention), nothing inverted.
   std::vector<Tet> flipped(tets.begin(), tets.begin() + 6);
   for (Tet& c : flipped) std::swap(c[0], c[1]);
   const auto rf = P::check_validity(pts, flipped);
   CHECK(rf.valid);
-  CHECK_EQ(rf.inverted, std::size_t(0));
-  CHECK_EQ(rf.negative, std::size_t(6));
+  CHECK_EQUAL(rf.inverted, std::size_t(0));
+  CHECK_EQUAL(rf.negative, std::size_t(6));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -258,16 +236,14 @@ void test_link_condition_rejects_single_tetrahedron() {
   const std::vector<Point> pts{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
   const std::vector<Tet> tets{Tet{{0, 1, 2, 3}}};
   const Octree tree(P::make_input(pts, tets), Octree::infinite_bucket_size);
-  const P::Collapse_check check = P::check_half_edge_collapse(tree, 0, 1);
+  const P::Collapse_check check = P::check_half_edge_collapse(tree, Octree::Index(0), Octree::Index(1));
   CHECK(check.edge_exists);
   CHECK(check.boundary);
   CHECK(check.geometry);
   CHECK(!check.link);
-  P::Simplification_options o;
-  o.max_edge_length = 10;
-  const auto res = P::simplify(P::make_input(pts, tets), o);
-  CHECK_EQ(res.mesh.tetrahedra.size(), std::size_t(1));
-  CHECK_EQ(res.statistics.blocked.link, std::size_t(6));
+  const auto res = P::simplify(P::make_input(pts, tets), params::max_edge_length(10.0));
+  CHECK_EQUAL(res.mesh.tetrahedra.size(), std::size_t(1));
+  CHECK_EQUAL(res.statistics.blocked.link, std::size_t(6));
 }
 
 // A solid torus with a triangular cross-section, one prism (three tetrahedra) per sector and
@@ -293,17 +269,18 @@ void test_link_condition_rejects_ring() {
     // the prism (a0 a1 a2 | b0 b1 b2) in three tetrahedra, staircase split with the lowest index first
     const Tet split[3] = {Tet{{a0, a1, a2, b2}}, Tet{{a0, a1, b1, b2}}, Tet{{a0, b0, b1, b2}}};
     for (Tet c : split) {
-      if (CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]) == CGAL::NEGATIVE) std::swap(c[2], c[3]);
+      if (CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]) == CGAL::NEGATIVE)
+        std::swap(c[2], c[3]);
       tets.push_back(c);
     }
   }
   const Brute b = brute_force(pts, tets);
-  CHECK_EQ(b.flat, std::size_t(0));
-  CHECK_EQ(b.nonmanifold_triangles, std::size_t(0));
-  CHECK_EQ(b.euler, 0LL); // a solid torus
+  CHECK_EQUAL(b.flat, std::size_t(0));
+  CHECK_EQUAL(b.nonmanifold_triangles, std::size_t(0));
+  CHECK_EQUAL(b.euler, 0LL); // a solid torus
   const auto valid = P::check_validity(pts, tets);
   CHECK(valid.valid);
-  CHECK_EQ(valid.euler_characteristic, 0LL);
+  CHECK_EQUAL(valid.euler_characteristic, 0LL);
 
   const Octree tree(P::make_input(pts, tets), Octree::infinite_bucket_size);
   const auto from = tree.vertex_from_original();
@@ -316,13 +293,15 @@ void test_link_condition_rejects_ring() {
     for (std::uint32_t corner = 0; corner < 3; ++corner)
       for (int dir = 0; dir < 2; ++dir) {
         const std::uint32_t p0 = 3 * s0 + corner, p1 = 3 * ((s0 + 1) % 3) + corner;
-        const P::Collapse_check ch = P::check_half_edge_collapse(tree, from[dir ? p1 : p0], from[dir ? p0 : p1]);
+        const P::Collapse_check ch =
+            P::check_half_edge_collapse(tree, from[dir ? p1 : p0], from[dir ? p0 : p1]);
         CHECK(ch.edge_exists);
         CHECK(ch.boundary);
         CHECK(!ch.link);
         link_only += ch.geometry;
       }
-  std::cout << "ring: " << link_only << " of 18 ring-edge collapses rejected by the link condition alone" << std::endl;
+  std::cout << "ring: " << link_only << " of 18 ring-edge collapses rejected by the link condition alone"
+            << std::endl;
   CHECK(link_only >= 1);
   // No collapse at all can keep a one-sector-thick ring of three sectors a solid torus.
   std::set<std::array<std::uint32_t, 2>> edges;
@@ -332,66 +311,74 @@ void test_link_condition_rejects_ring() {
   for (const auto& e : edges)
     for (int dir = 0; dir < 2; ++dir)
       CHECK(!P::check_half_edge_collapse(tree, from[e[dir]], from[e[1 - dir]]).allowed());
-  P::Simplification_options o;
-  o.max_edge_length = 100;
-  const auto res = P::simplify(P::make_input(pts, tets), o);
-  CHECK_EQ(res.mesh.tetrahedra.size(), tets.size());
+  const auto res = P::simplify(P::make_input(pts, tets), params::max_edge_length(100.0));
+  CHECK_EQUAL(res.mesh.tetrahedra.size(), tets.size());
 }
 
 // ---------------------------------------------------------------------------------------------
 // Simplification of real meshes
 // ---------------------------------------------------------------------------------------------
 
+// The options of one run (given to simplify() as named parameters).
+struct Run {
+  double target_fraction = 0;                                       // 0: no target
+  double max_edge_length = std::numeric_limits<double>::infinity(); // no bound
+  std::size_t bucket_size = Octree::default_bucket_size;
+};
+
 // Runs one simplification and checks everything that must hold of its output.
 P::Simplification_statistics check_run(const Mesh& mesh, const Brute& in, const P::Validity_result& vin,
-                                       const P::Simplification_options& o, const std::string& name) {
-  const auto res = P::simplify(mesh, o);
+                                       const Run& o, const std::string& name) {
+  const auto res = P::simplify(mesh, params::target_fraction(o.target_fraction)
+                                         .max_edge_length(o.max_edge_length)
+                                         .bucket_size(o.bucket_size));
   const auto& s = res.statistics;
   std::cout << "  " << name << " target " << o.target_fraction << " k_v "
-            << (o.bucket_size == Octree::infinite_bucket_size ? std::string("inf") : std::to_string(o.bucket_size))
+            << (o.bucket_size == Octree::infinite_bucket_size ? std::string("inf")
+                                                              : std::to_string(o.bucket_size))
             << ": removed " << s.removed_tetrahedra << " / " << s.input_tetrahedra << " in " << s.rounds
-            << " rounds, max queue " << s.max_queue_size << ", blocked " << s.blocked.different_leaves << " leaves, "
-            << s.blocked.boundary << " boundary, " << s.blocked.flip << " flip, " << s.blocked.link << " link, "
-            << s.seconds << " s" << std::endl;
-  CHECK_EQ(s.input_tetrahedra, mesh.tetrahedra.size());
-  CHECK_EQ(s.output_tetrahedra, res.mesh.tetrahedra.size());
-  CHECK_EQ(s.input_tetrahedra - s.output_tetrahedra, s.removed_tetrahedra);
-  CHECK_EQ(res.input_vertex.size(), res.mesh.points.size());
-  CHECK_EQ(s.removed_per_round.size(), s.rounds);
+            << " rounds, max queue " << s.max_queue_size << ", blocked " << s.blocked.different_leaves
+            << " leaves, " << s.blocked.boundary << " boundary, " << s.blocked.flip << " flip, "
+            << s.blocked.link << " link, " << s.seconds << " s" << std::endl;
+  CHECK_EQUAL(s.input_tetrahedra, mesh.tetrahedra.size());
+  CHECK_EQUAL(s.output_tetrahedra, res.mesh.tetrahedra.size());
+  CHECK_EQUAL(s.input_tetrahedra - s.output_tetrahedra, s.removed_tetrahedra);
+  CHECK_EQUAL(res.input_vertex.size(), res.mesh.points.size());
+  CHECK_EQUAL(s.removed_per_round.size(), s.rounds);
   std::size_t per_round = 0;
   for (std::size_t n : s.removed_per_round) per_round += n;
-  CHECK_EQ(per_round, s.removed_tetrahedra);
+  CHECK_EQUAL(per_round, s.removed_tetrahedra);
 
   // Validity and topology.
   const auto v = P::check_validity(res.mesh.points, res.mesh.tetrahedra);
-  CHECK_EQ(v.inverted, std::size_t(0));
-  CHECK_EQ(v.negative, std::size_t(0)); // the output is positively oriented
-  CHECK_EQ(v.degenerate, std::size_t(0));
-  CHECK_EQ(v.nonmanifold_triangles, vin.nonmanifold_triangles);
+  CHECK_EQUAL(v.inverted, std::size_t(0));
+  CHECK_EQUAL(v.negative, std::size_t(0)); // the output is positively oriented
+  CHECK_EQUAL(v.degenerate, std::size_t(0));
+  CHECK_EQUAL(v.nonmanifold_triangles, vin.nonmanifold_triangles);
   CHECK(v.nonmanifold_vertices <= vin.nonmanifold_vertices);
   if (vin.valid) CHECK(v.valid);
-  CHECK_EQ(v.euler_characteristic, vin.euler_characteristic);
-  CHECK_EQ(v.boundary_components, vin.boundary_components);
+  CHECK_EQUAL(v.euler_characteristic, vin.euler_characteristic);
+  CHECK_EQUAL(v.boundary_components, vin.boundary_components);
 
   // Vertices never move; boundary vertices of the output were boundary vertices of the input.
   const Brute out = brute_force(res.mesh.points, res.mesh.tetrahedra);
-  CHECK_EQ(out.euler, in.euler);
-  CHECK_EQ(out.boundary_components, in.boundary_components);
+  CHECK_EQUAL(out.euler, in.euler);
+  CHECK_EQUAL(out.boundary_components, in.boundary_components);
   std::size_t moved = 0, off_boundary = 0;
   for (std::size_t i = 0; i < res.mesh.points.size(); ++i) {
     const std::size_t o_i = res.input_vertex[i];
     moved += !(res.mesh.points[i] == mesh.points[o_i]);
-    if (out.boundary_vertices.count(static_cast<std::uint32_t>(i)) && !in.boundary_vertices.count(o_i)) ++off_boundary;
+    if (out.boundary_vertices.count(static_cast<std::uint32_t>(i)) && !in.boundary_vertices.count(o_i))
+      ++off_boundary;
   }
-  CHECK_EQ(moved, std::size_t(0));
-  CHECK_EQ(off_boundary, std::size_t(0));
+  CHECK_EQUAL(moved, std::size_t(0));
+  CHECK_EQUAL(off_boundary, std::size_t(0));
   // The scalar field follows its vertex.
-  CHECK_EQ(res.mesh.point_data.size(), mesh.point_data.size());
+  CHECK_EQUAL(res.mesh.point_data.size(), mesh.point_data.size());
   for (std::size_t k = 0; k < std::min(res.mesh.point_data.size(), mesh.point_data.size()); ++k)
     for (std::size_t i = 0; i < res.mesh.points.size(); ++i)
       if (res.mesh.point_data[k].values[i] != mesh.point_data[k].values[res.input_vertex[i]]) {
-        ++failures;
-        std::cerr << name << ": point data " << k << " not carried at vertex " << i << std::endl;
+        FAIL(name << ": point data " << k << " not carried at vertex " << i);
         break;
       }
   return s;
@@ -411,11 +398,11 @@ void test_mesh(const std::string& file, bool targets) {
   std::vector<Tet> tets(mesh.tetrahedra.begin(), mesh.tetrahedra.end());
   const Brute in = brute_force(mesh.points, tets);
   const auto vin = P::check_validity(mesh.points, mesh.tetrahedra);
-  CHECK_EQ(vin.euler_characteristic, in.euler);
-  CHECK_EQ(vin.boundary_components, in.boundary_components);
-  CHECK_EQ(vin.nonmanifold_triangles, in.nonmanifold_triangles);
-  CHECK_EQ(vin.inverted, std::min(in.positive, in.negative));
-  CHECK_EQ(vin.degenerate, in.flat);
+  CHECK_EQUAL(vin.euler_characteristic, in.euler);
+  CHECK_EQUAL(vin.boundary_components, in.boundary_components);
+  CHECK_EQUAL(vin.nonmanifold_triangles, in.nonmanifold_triangles);
+  CHECK_EQUAL(vin.inverted, std::min(in.positive, in.negative));
+  CHECK_EQUAL(vin.degenerate, in.flat);
 
   const std::size_t kvs[] = {20, Octree::infinite_bucket_size};
   const double fractions_all[] = {0.25, 0.5};
@@ -424,21 +411,23 @@ void test_mesh(const std::string& file, bool targets) {
   const std::size_t nf = targets ? 2 : 1;
   for (std::size_t i = 0; i < nf; ++i) {
     for (std::size_t kv : kvs) {
-      P::Simplification_options o;
+      Run o;
       o.target_fraction = fb[i];
       o.bucket_size = kv;
       const auto s = check_run(mesh, in, vin, o, file);
-      if (targets && vin.valid) {
+      if (targets) {
+        CHECK(vin.valid); // the generated meshes given with `targets` are valid
         // Both the global and the local algorithm reach the target on a mesh of >= 10K tetrahedra.
-        const std::size_t target = static_cast<std::size_t>(std::ceil(fb[i] * double(mesh.tetrahedra.size())));
+        const std::size_t target =
+            static_cast<std::size_t>(std::ceil(fb[i] * double(mesh.tetrahedra.size())));
         CHECK(s.removed_tetrahedra >= target);
-        if (kv == Octree::infinite_bucket_size) CHECK_EQ(s.blocked.different_leaves, std::size_t(0));
+        if (kv == Octree::infinite_bucket_size) CHECK_EQUAL(s.blocked.different_leaves, std::size_t(0));
       }
     }
   }
-  // A length threshold only: every remaining edge within the leaves is longer or blocked.
-  P::Simplification_options o;
-  o.max_edge_length = 0.0; // set below from the data
+  // A length threshold only (0.8 times the mean length of the first edges): something is removed,
+  // and the output passes every check of check_run.
+  Run o;
   double sum = 0;
   std::size_t n = 0;
   for (const auto& c : mesh.tetrahedra) {
@@ -447,32 +436,26 @@ void test_mesh(const std::string& file, bool targets) {
   }
   o.max_edge_length = 0.8 * sum / double(n);
   o.bucket_size = 50;
-  check_run(mesh, in, vin, o, file + " (length only)");
+  const auto s = check_run(mesh, in, vin, o, file + " (length only)");
+  CHECK(s.removed_tetrahedra > 0);
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
+  const prstar_test::Data_folders data(argc, argv);
   test_validity_hand_made();
   test_exact_predicate_rejects();
   test_link_condition_rejects_single_tetrahedron();
   test_link_condition_rejects_ring();
 
-  if (argc > 1) {
-    const std::string dir = argv[1];
-    for (const char* name : {"sphere.mesh", "torus.mesh"}) test_mesh(dir + "/" + name, true);
-    for (const char* name : {"cube.mesh", "sphere_tetgen.mesh", "cube_tetgen.vtu"}) test_mesh(dir + "/" + name, false);
-  }
-  if (argc > 2) {
-    const std::string dir = argv[2];
+  for (const char* name : {"sphere.mesh", "torus.mesh"})
+    if (const auto file = data.generated_file(name)) test_mesh(*file, true);
+  for (const char* name : {"cube.mesh", "sphere_tetgen.mesh", "cube_tetgen.vtu"})
+    if (const auto file = data.generated_file(name)) test_mesh(*file, false);
+  if (data.report_shared())
     for (const char* name : {"armadillo_sofa.vtu", "bunny_sofa.vtu", "skull_14k.off", "spx_zsweep.off",
                              "part1.1.ele", "t13_data.1.ele"})
-      if (exists(dir + "/" + name)) test_mesh(dir + "/" + name, false);
-  }
-  if (failures) {
-    std::cerr << failures << " check(s) failed" << std::endl;
-    return EXIT_FAILURE;
-  }
-  std::cout << "all simplification tests passed" << std::endl;
-  return EXIT_SUCCESS;
+      if (const auto file = data.shared_file(name)) test_mesh(*file, false);
+  return prstar_test::summary("test_simplification");
 }
