@@ -1,16 +1,13 @@
 // Copyright (c) 2026 The PR-star octree project.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Small command-line helpers of the prstar tool: argument parsing, JSON and table output, progress.
+// Small command-line helpers of the prstar tool: argument parsing, JSON and table output.
 
 #ifndef PRSTAR_CLI_H
 #define PRSTAR_CLI_H
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
@@ -263,55 +260,6 @@ inline std::string human_bytes(double b) {
   }
   return fixed(b, u == 0 ? 0 : 1) + " " + unit[u];
 }
-
-/// Progress on stderr for work that can take more than a second: a line per phase, redrawn in
-/// place with a bar when a fraction is known.  Silent when stderr is not a terminal or when quiet.
-class Progress {
-public:
-  explicit Progress(bool quiet) : enabled_(!quiet && isatty(2)) {}
-  ~Progress() { finish(); }
-  void phase(const std::string& name) {
-    finish();
-    name_ = name;
-    start_ = std::chrono::steady_clock::now();
-    active_ = true;
-    draw(-1);
-  }
-  /// `fraction` in [0,1]; redraws at most every 100 ms.
-  void update(double fraction) {
-    if (!active_) return;
-    auto now = std::chrono::steady_clock::now();
-    if (now - last_ < std::chrono::milliseconds(100)) return;
-    last_ = now;
-    draw(fraction);
-  }
-  void finish() {
-    if (!active_) return;
-    active_ = false;
-    if (!enabled_) return;
-    std::fprintf(stderr, "\r\033[K%s ... done (%.2f s)\n", name_.c_str(), seconds());
-  }
-  double seconds() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-
-private:
-  void draw(double fraction) {
-    if (!enabled_) return;
-    if (fraction < 0) {
-      std::fprintf(stderr, "\r\033[K%s ...", name_.c_str());
-    } else {
-      const int width = 30, filled = static_cast<int>(fraction * width + 0.5);
-      std::fprintf(stderr, "\r\033[K%s [%s%s] %3d%%", name_.c_str(), std::string(filled, '#').c_str(),
-                   std::string(width - filled, '.').c_str(), static_cast<int>(fraction * 100 + 0.5));
-    }
-    std::fflush(stderr);
-  }
-  bool enabled_;
-  bool active_ = false;
-  std::string name_;
-  std::chrono::steady_clock::time_point start_, last_;
-};
 
 } // namespace prstar
 

@@ -1,0 +1,185 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// prstar curvature: discrete distortion of a scalar field at every vertex (paper Section 8).
+
+#include "commands.h"
+#include "vertex_code.h"
+
+#include <CGAL/PR_star_octree.h>
+#include <CGAL/PR_star_octree/distortion.h>
+#include <CGAL/PR_star_octree/parameters.h>
+#include <CGAL/property_map.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <limits>
+
+namespace prstar {
+
+namespace {
+
+using Octree = CGAL::PR_star_octree_3<>;
+namespace params = CGAL::PR_star_octree::parameters;
+
+int run_curvature(const Options& o) {
+  const std::string& input = o.input();
+  const std::size_t kv = o.kv();
+  const std::string out = o.output(), csv = o.output("--csv");
+  Progress_bar progress(o.show_progress());
+  const Mesh mesh = read_mesh(input, progress);
+
+  // The field, in the user's vertex order.
+  std::string field_name = o.get("--field");
+  std::vector<double> values(mesh.points.size());
+  if (field_name == "x" || field_name == "y" || field_name == "z") {
+    const int axis = field_name[0] - 'x';
+    for (std::size_t v = 0; v < values.size(); ++v)
+      values[v] = axis == 0 ? mesh.points[v].x() : axis == 1 ? mesh.points[v].y() : mesh.points[v].z();
+  } else {
+    const CGAL::PR_star_octree::Point_data_array* a =
+        field_name.empty() ? mesh.scalar_field() : mesh.find_point_data(field_name);
+    if (!a) {
+      std::string known;
+      for (const auto& d : mesh.point_data) known += (known.empty() ? "" : ", ") + d.name;
+      throw std::runtime_error(input + ": " +
+                               (field_name.empty() ? std::string("the mesh has no point data")
+                                                   : "no point-data array named '" + field_name + "'") +
+                               (known.empty() ? "" : " (it has: " + known + ")") +
+                               "; use --field x|y|z for a coordinate");
+    }
+    field_name = a->name;
+    values = a->values;
+  }
+  for (std::size_t v = 0; v < values.size(); ++v)
+    if (!std::isfinite(values[v]))
+      throw std::runtime_error(input + ": field '" + field_name + "' is not finite at vertex " +
+                               std::to_string(v));
+
+  const auto start = std::chrono::steady_clock::now();
+  progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
+  const Octree tree(CGAL::PR_star_octree::make_input(mesh),
+                    params::bucket_size(kv).maximum_depth(o.max_depth()));
+  progress.phase("computing the distortion leaf by leaf");
+  std::vector<CGAL::PR_star_octree::Vertex_curvature> curv(mesh.points.size()); // the user's numbering
+  CGAL::PR_star_octree::compute_curvature(tree, CGAL::make_property_map(values),
+                                          CGAL::make_property_map(curv),
+                                          params::progress(progress.callback()));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.finish();
+
+  // The arrays for the outputs, and the summary.  The distortions are added in the octree's order
+  // (as the tool always did), so that distortion_mean does not change in the last bits.
+  const std::size_t nv = mesh.points.size();
+  CGAL::PR_star_octree::Point_data_array boundary{"boundary", std::vector<double>(nv)},
+      distortion{"distortion", std::vector<double>(nv)}, domain{"domain_curvature", std::vector<double>(nv)};
+  std::size_t counts[4] = {0, 0, 0, 0};
+  double dmin = std::numeric_limits<double>::infinity(), dmax = -dmin, dsum = 0;
+  std::size_t dn = 0;
+  for (std::size_t v = 0; v < nv; ++v) {
+    const std::size_t u = tree.original_vertex(static_cast<Octree::Index>(v));
+    const auto& c = curv[u];
+    boundary.values[u] = vertex_type_code(c.type);
+    distortion.values[u] = c.distortion;
+    domain.values[u] = c.domain_curvature;
+    ++counts[static_cast<int>(vertex_type_code(c.type))];
+    if (c.type == CGAL::PR_star_octree::Vertex_type::INTERIOR ||
+        c.type == CGAL::PR_star_octree::Vertex_type::BOUNDARY) {
+      dmin = std::min(dmin, c.distortion);
+      dmax = std::max(dmax, c.distortion);
+      dsum += c.distortion;
+      ++dn;
+    }
+  }
+  if (!out.empty()) {
+    progress.phase("writing " + out);
+    // VTU point data must be finite (our reader refuses NaN, and so do some of ParaView's): the
+    // undefined values of non-manifold vertices are written as 0 there, flagged by boundary = 2.
+    auto finite = [](CGAL::PR_star_octree::Point_data_array a) {
+      for (double& x : a.values)
+        if (!std::isfinite(x)) x = 0;
+      return a;
+    };
+    write_vtu_file(out, mesh, {boundary, finite(distortion), finite(domain)});
+    progress.finish();
+  }
+  if (!csv.empty()) {
+    progress.phase("writing " + csv);
+    write_through_temporary(csv, [&](const std::string& tmp) {
+      std::ofstream f(tmp);
+      f << std::setprecision(std::numeric_limits<double>::max_digits10);
+      f << "vertex,x,y,z,boundary,distortion\n";
+      for (std::size_t v = 0; v < nv; ++v)
+        f << v << ',' << mesh.points[v].x() << ',' << mesh.points[v].y() << ',' << mesh.points[v].z() << ','
+          << static_cast<int>(boundary.values[v]) << ',' << distortion.values[v] << '\n';
+      f.flush();
+      if (!f) throw std::runtime_error(csv + ": cannot write the output file");
+    });
+    progress.finish();
+  }
+  if (o.json()) {
+    Json j;
+    j.begin_object().field("vertices", nv).field("tetrahedra", mesh.tetrahedra.size()).key("kv");
+    json_kv(j, kv)
+        .field("field", field_name)
+        .field("interior_vertices", counts[0])
+        .field("boundary_vertices", counts[1])
+        .field("nonmanifold_vertices", counts[2])
+        .field("unreferenced_vertices", counts[3]);
+    if (dn)
+      j.field("distortion_min", dmin)
+          .field("distortion_max", dmax)
+          .field("distortion_mean", dsum / double(dn));
+    j.field("seconds", seconds);
+    if (!out.empty()) j.field("output", out);
+    if (!csv.empty()) j.field("csv", csv);
+    j.end_object();
+    std::cout << j.str() << '\n';
+    return exit_success;
+  }
+  std::cout << input << ": distortion of '" << field_name << "' (k_v = " << bucket_size_string(kv) << ", "
+            << fixed(seconds, 3) << " s)\n";
+  Table t({"vertices", "count", "distortion min", "max", "mean"});
+  t.add({"all manifold", std::to_string(dn), dn ? fixed(dmin, 6) : "-", dn ? fixed(dmax, 6) : "-",
+         dn ? fixed(dsum / double(dn), 6) : "-"});
+  t.add({"interior", std::to_string(counts[0]), "", "", ""});
+  t.add({"boundary", std::to_string(counts[1]), "", "", ""});
+  t.add({"non-manifold (NaN)", std::to_string(counts[2]), "", "", ""});
+  std::cout << t.str();
+  if (!out.empty()) std::cout << "wrote " << out << '\n';
+  if (!csv.empty()) std::cout << "wrote " << csv << '\n';
+  return exit_success;
+}
+
+} // namespace
+
+Command curvature_command() {
+  return Command("curvature", "discrete distortion of a scalar field at every vertex (paper Section 8)")
+      .input()
+      .description(
+          R"(Discrete distortion of a scalar field at every vertex (paper Section 8): the field lifts the mesh
+into R^4; the distortion at v is (4 pi, or the sum of the 3D solid angles on the boundary) minus
+the sum of the solid angles at v of the lifted tetrahedra of its star.  Also computes the 3D
+concentrated curvature of the domain ((4 pi or 2 pi) minus the sum of the 3D solid angles).
+Non-manifold vertices get NaN.)")
+      .option("--field", "NAME|x|y|z",
+              "a point-data array of MESH (default: its first one), or x, y, z for a coordinate")
+      .kv("50")
+      .max_depth()
+      .output("OUT.vtu", ".vtu",
+              "write the mesh with point arrays `boundary`, `distortion`, `domain_curvature`\n"
+              "(non-manifold vertices: boundary = 2 and 0 for the undefined values)")
+      .output("OUT.csv", ".csv",
+              "write one row per input vertex, in the input order: vertex,x,y,z,boundary,distortion\n"
+              "(boundary: 0 interior, 1 boundary, 2 non-manifold, 3 in no tetrahedron;\n"
+              "distortion: nan for non-manifold vertices)",
+              false, "--csv")
+      .json_keys("keys: vertices, tetrahedra, kv, field, interior_vertices, boundary_vertices,\n"
+                 "nonmanifold_vertices, unreferenced_vertices, distortion_min, distortion_max,\n"
+                 "distortion_mean (over manifold vertices, when there are some), seconds, output, csv")
+      .run(run_curvature);
+}
+
+} // namespace prstar

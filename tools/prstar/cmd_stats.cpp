@@ -1,0 +1,149 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// prstar stats: storage statistics of the PR-star octree (paper Table 1) and simplex counts.
+
+#include "commands.h"
+
+#include <CGAL/PR_star_octree.h>
+#include <CGAL/PR_star_octree/Leaf_topology.h>
+#include <CGAL/PR_star_octree/parameters.h>
+
+#include <iostream>
+
+namespace prstar {
+
+namespace {
+
+using Octree = CGAL::PR_star_octree_3<>;
+namespace params = CGAL::PR_star_octree::parameters;
+
+void statistics_json(prstar::Json& j, const CGAL::PR_star_octree::Statistics& s,
+                     const CGAL::PR_star_octree::Simplex_counts& c) {
+  j.begin_object();
+  j.field("vertices", s.vertices).field("tetrahedra", s.tetrahedra);
+  j.field("edges", c.edges).field("triangles", c.triangles).field("boundary_triangles", c.boundary_triangles);
+  j.field("nonmanifold_triangles", c.nonmanifold_triangles);
+  j.field("euler_characteristic", c.euler_characteristic());
+  if (s.infinite_bucket_size)
+    j.field("kv", "inf");
+  else
+    j.field("kv", s.bucket_size);
+  j.field("nodes", s.nodes).field("leaves", s.leaves).field("empty_leaves", s.empty_leaves);
+  j.field("depth", s.depth).field("max_depth", s.max_depth).field("chi", s.chi);
+  j.field("max_leaf_vertices", s.max_leaf_vertices).field("max_leaf_tetrahedra", s.max_leaf_tetrahedra);
+  j.field("depth_limited_leaves", s.depth_limited_leaves).field("coincident_leaves", s.coincident_leaves);
+  j.field("duplicate_vertices", s.duplicate_vertices).field("unreferenced_vertices", s.unreferenced_vertices);
+  j.field("reoriented_tetrahedra", s.reoriented_tetrahedra)
+      .field("degenerate_tetrahedra", s.degenerate_tetrahedra);
+  j.key("storage").begin_object();
+  j.field("prstar_overhead_per_vertex", s.prstar_overhead_per_vertex);
+  j.field("prstar_total_per_vertex", s.prstar_total_per_vertex);
+  j.field("ia_overhead_per_vertex", s.ia_overhead_per_vertex);
+  j.field("ia_total_per_vertex", s.ia_total_per_vertex);
+  j.field("bytes", s.bytes.total());
+  j.key("bytes_detail").begin_object();
+  j.field("points", s.bytes.points).field("scalars", s.bytes.scalars).field("tetrahedra", s.bytes.tetrahedra);
+  j.field("nodes", s.bytes.nodes).field("leaf_tetrahedra", s.bytes.leaf_tetrahedra);
+  j.field("permutations", s.bytes.permutations).field("index", s.bytes.index());
+  j.end_object();
+  j.end_object();
+  j.end_object();
+}
+
+} // namespace
+
+// Builds the octree for each k_v and prints the statistics (a table, or JSON).
+void report_statistics(const Mesh& mesh, const std::string& name, const std::vector<std::size_t>& kvs,
+                       std::size_t max_depth, bool json, Progress_bar& progress) {
+  std::vector<CGAL::PR_star_octree::Statistics> stats;
+  std::vector<double> seconds;
+  CGAL::PR_star_octree::Simplex_counts counts;
+  for (std::size_t kv : kvs) {
+    progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
+    const Octree tree(CGAL::PR_star_octree::make_input(mesh),
+                      params::bucket_size(kv).maximum_depth(max_depth));
+    seconds.push_back(progress.seconds());
+    progress.finish();
+    stats.push_back(tree.statistics());
+    if (stats.size() == 1) { // the counts do not depend on k_v: compute them once, locally
+      progress.phase("counting edges and triangles leaf by leaf");
+      counts = CGAL::PR_star_octree::count_simplices(tree, params::progress(progress.callback()));
+      progress.finish();
+    }
+  }
+  if (json) {
+    Json j;
+    if (stats.size() > 1) j.begin_array();
+    for (const auto& s : stats) statistics_json(j, s, counts);
+    if (stats.size() > 1) j.end_array();
+    std::cout << j.str() << '\n';
+    return;
+  }
+  const auto& s0 = stats.front();
+  std::cout << name << ": " << s0.vertices << " vertices, " << s0.tetrahedra << " tetrahedra (|T|/|V| = "
+            << fixed(s0.vertices ? double(s0.tetrahedra) / double(s0.vertices) : 0., 2) << ")\n";
+  std::cout << "  " << counts.edges << " edges, " << counts.triangles << " triangles ("
+            << counts.boundary_triangles << " on the boundary), Euler characteristic "
+            << counts.euler_characteristic() << "\n";
+  if (counts.nonmanifold_triangles)
+    std::cout << "  warning: " << counts.nonmanifold_triangles
+              << " triangles are shared by three or more tetrahedra\n";
+  if (s0.reoriented_tetrahedra)
+    std::cout << "  " << s0.reoriented_tetrahedra
+              << " tetrahedra listed with negative orientation (reoriented)\n";
+  if (s0.degenerate_tetrahedra)
+    std::cout << "  warning: " << s0.degenerate_tetrahedra << " tetrahedra have zero volume\n";
+  if (s0.duplicate_vertices) std::cout << "  warning: " << s0.duplicate_vertices << " duplicate vertices\n";
+  if (s0.unreferenced_vertices)
+    std::cout << "  " << s0.unreferenced_vertices << " vertices in no tetrahedron\n";
+  std::cout << "  extended IA cost model: overhead " << fixed(s0.ia_overhead_per_vertex, 2) << " |V|, total "
+            << fixed(s0.ia_total_per_vertex, 2) << " |V|\n\n";
+
+  Table t({"k_v", "|N|", "|N_leaf|", "depth", "chi", "overhead/|V|", "total/|V|", "index bytes",
+           "total bytes", "build s"});
+  for (std::size_t i = 0; i < stats.size(); ++i) {
+    const auto& s = stats[i];
+    t.add({bucket_size_string(kvs[i]), std::to_string(s.nodes), std::to_string(s.leaves),
+           std::to_string(s.depth), fixed(s.chi, 3), fixed(s.prstar_overhead_per_vertex, 2),
+           fixed(s.prstar_total_per_vertex, 2), human_bytes(double(s.bytes.index())),
+           human_bytes(double(s.bytes.total())), fixed(seconds[i], 3)});
+  }
+  std::cout << t.str();
+  for (std::size_t i = 0; i < stats.size(); ++i) {
+    const auto& s = stats[i];
+    if (s.depth_limited_leaves || s.coincident_leaves)
+      std::cout << "note (k_v = " << bucket_size_string(kvs[i]) << "): " << s.depth_limited_leaves
+                << " leaves stopped at the depth bound " << s.max_depth << ", " << s.coincident_leaves
+                << " leaves of coincident points hold more than k_v vertices (largest leaf: "
+                << s.max_leaf_vertices << " vertices)\n";
+  }
+}
+
+namespace {
+
+int run_stats(const Options& o) {
+  Progress_bar progress(o.show_progress());
+  const Mesh mesh = read_mesh(o.input(), progress);
+  report_statistics(mesh, o.input(), o.kvs(), o.max_depth(), o.json(), progress);
+  return exit_success;
+}
+
+} // namespace
+
+Command stats_command() {
+  return Command("stats",
+                 "storage statistics of the PR-star octree of a mesh (paper Table 1) and simplex counts")
+      .input()
+      .description(
+          R"(Builds the PR-star octree of MESH and prints its storage statistics (paper Table 1): |V|, |T|,
+k_v, |N|, |N_leaf|, depth, chi, the cost model of the PR-star octree and of the extended IA data
+structure (in multiples of |V|), and the bytes really used; also the numbers of edges and
+triangles and the Euler characteristic, counted leaf by leaf.)")
+      .kv("50", true)
+      .max_depth()
+      .json_keys("(an array of objects for a list of k_v); the keys are listed in the README")
+      .run(run_stats);
+}
+
+} // namespace prstar

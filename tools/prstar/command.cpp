@@ -1,0 +1,359 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#include "command.h"
+
+#include <CGAL/PR_star_octree.h>
+#include <CGAL/PR_star_octree/IO.h>
+
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <new>
+#include <sstream>
+#include <stdexcept>
+
+namespace prstar {
+
+namespace {
+
+using Octree = CGAL::PR_star_octree_3<>;
+
+// The help texts of the common options: the only place they are written.
+const char* const help_kv = "bucket threshold k_v of the octree, a positive integer or inf (one leaf)";
+const char* const help_kv_list = ";\na comma-separated list gives one row per value";
+const char* const help_max_depth = "depth bound of the octree, 1 to 64 (default 32)";
+const char* const help_force = "overwrite an existing output file (never the input)";
+const char* const help_json = "print the result as one JSON object on stdout, and no progress";
+const char* const help_quiet = "no progress on stderr";
+const char* const help_quiet_summary = "no progress on stderr, and no summary on stdout";
+const char* const help_help = "show this help";
+
+bool ends_with(const std::string& s, const std::string& end) {
+  return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+}
+
+bool file_exists(const std::string& f) {
+  struct stat st;
+  return ::stat(f.c_str(), &st) == 0;
+}
+
+// The same name, or two names of one existing file.
+bool same_file(const std::string& a, const std::string& b) {
+  if (a == b) return true;
+  struct stat sa, sb;
+  return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
+         sa.st_ino == sb.st_ino;
+}
+
+// One option of the help text: the label in a column, the text after it, its continuation lines
+// indented to the same column.
+void help_line(std::ostringstream& s, const std::string& label, const std::string& text, std::size_t column) {
+  s << "  " << label << std::string(column > label.size() ? column - label.size() : 1, ' ');
+  for (char c : text) {
+    s << c;
+    if (c == '\n') s << std::string(column + 2, ' ');
+  }
+  s << '\n';
+}
+
+// The temporary being written, removed by a fatal signal.
+char pending_temporary[4096];
+volatile std::sig_atomic_t has_pending_temporary = 0;
+
+extern "C" void remove_temporary_and_reraise(int sig) {
+  if (has_pending_temporary) ::unlink(pending_temporary);
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+
+void install_signal_cleanup() {
+  static bool installed = false;
+  if (installed) return;
+  installed = true;
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction old;
+    if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue; // e.g. nohup
+    struct sigaction a;
+    std::memset(&a, 0, sizeof a);
+    a.sa_handler = remove_temporary_and_reraise;
+    sigemptyset(&a.sa_mask);
+    ::sigaction(sig, &a, nullptr);
+  }
+}
+
+// `message` with every occurrence of `from` replaced by `to`.
+std::string replace_all(std::string message, const std::string& from, const std::string& to) {
+  for (std::size_t at = message.find(from); at != std::string::npos; at = message.find(from, at + to.size()))
+    message.replace(at, from.size(), to);
+  return message;
+}
+
+} // namespace
+
+Command& Command::description(std::string text) {
+  description_ = std::move(text);
+  return *this;
+}
+Command& Command::synopsis(std::string text) {
+  synopsis_ = std::move(text);
+  return *this;
+}
+Command& Command::epilog(std::function<std::string()> text) {
+  epilog_ = std::move(text);
+  return *this;
+}
+Command& Command::input(std::string name) {
+  input_ = std::move(name);
+  return *this;
+}
+Command& Command::kv(std::string default_value, bool list) {
+  has_kv_ = true;
+  kv_list_ = list;
+  kv_default_ = std::move(default_value);
+  return *this;
+}
+Command& Command::max_depth() {
+  has_max_depth_ = true;
+  return *this;
+}
+Command& Command::output(std::string value_name, std::string extension, std::string help, bool required,
+                         std::string option) {
+  outputs_.push_back(
+      {std::move(option), std::move(value_name), std::move(extension), std::move(help), required});
+  return *this;
+}
+Command& Command::json_keys(std::string help) {
+  json_keys_ = std::move(help);
+  return *this;
+}
+Command& Command::quiet_silences_summary() {
+  quiet_summary_ = true;
+  return *this;
+}
+Command& Command::option(std::string name, std::string value_name, std::string help, bool input_file) {
+  specific_.push_back({std::move(name), std::move(value_name), std::move(help), input_file});
+  return *this;
+}
+Command& Command::flag(std::string name, std::string help) {
+  specific_.push_back({std::move(name), "", std::move(help), false});
+  return *this;
+}
+Command& Command::check(Check f) {
+  check_ = std::move(f);
+  return *this;
+}
+Command& Command::run(Run f) {
+  run_ = std::move(f);
+  return *this;
+}
+
+std::string Command::usage_line() const {
+  std::string u = "prstar " + name_;
+  if (!input_.empty()) u += " " + input_;
+  if (!synopsis_.empty())
+    u += " " + synopsis_;
+  else
+    for (const Declared& d : specific_)
+      u += " [" + d.name + (d.value_name.empty() ? "" : " " + d.value_name) + "]";
+  if (has_kv_) u += kv_list_ ? " [--kv N|inf[,N...]]" : " [--kv N|inf]";
+  if (has_max_depth_) u += " [--max-depth D]";
+  for (const Output_decl& o : outputs_) {
+    const std::string s = (o.option.empty() ? "-o" : o.option) + " " + o.value_name;
+    u += o.required ? " " + s : " [" + s + "]";
+  }
+  if (!outputs_.empty()) u += " [--force]";
+  return u + " [--json] [--quiet]";
+}
+
+std::string Command::help() const {
+  std::vector<std::pair<std::string, std::string>> lines;
+  for (const Declared& d : specific_)
+    lines.push_back({d.name + (d.value_name.empty() ? "" : " " + d.value_name), d.help});
+  if (has_kv_)
+    lines.push_back(
+        {kv_list_ ? "--kv N|inf[,N...]" : "--kv N|inf",
+         help_kv + std::string(";\ndefault ") + kv_default_ + (kv_list_ ? help_kv_list : "")});
+  if (has_max_depth_) lines.push_back({"--max-depth D", help_max_depth});
+  for (const Output_decl& o : outputs_)
+    lines.push_back({(o.option.empty() ? "-o, --output" : o.option) + " " + o.value_name, o.help});
+  if (!outputs_.empty()) lines.push_back({"--force", help_force});
+  lines.push_back({"--json", help_json + (json_keys_.empty() ? "" : "\n" + json_keys_)});
+  lines.push_back({"--quiet", quiet_summary_ ? help_quiet_summary : help_quiet});
+  lines.push_back({"-h, --help", help_help});
+  std::size_t column = 0;
+  for (const auto& l : lines) column = std::max(column, l.first.size() + 2);
+
+  std::ostringstream s;
+  s << "usage: " << usage_line() << "\n\n";
+  if (!description_.empty()) s << description_ << "\n\n";
+  s << "options:\n";
+  for (const auto& l : lines) help_line(s, l.first, l.second, column);
+  if (epilog_) s << epilog_();
+  return s.str();
+}
+
+Options Command::parse(int argc, char** argv, int first) const {
+  std::vector<std::string> flags{"--json", "--quiet"}, values;
+  if (!outputs_.empty()) flags.push_back("--force");
+  for (const Declared& d : specific_) (d.value_name.empty() ? flags : values).push_back(d.name);
+  if (has_kv_) values.push_back("--kv");
+  if (has_max_depth_) values.push_back("--max-depth");
+  for (const Output_decl& o : outputs_) {
+    if (o.option.empty()) {
+      values.push_back("-o");
+      values.push_back("--output");
+    } else
+      values.push_back(o.option);
+  }
+  Options o(Arguments(argc, argv, first, flags, values));
+  const Arguments& args = o.args_;
+
+  const std::vector<std::string>& positional = args.positional();
+  if (!input_.empty()) {
+    if (positional.size() != 1)
+      throw Usage_error(positional.empty() ? "missing " + input_
+                                           : "expected one " + input_ + ", got several");
+    o.input_ = positional[0];
+  } else if (!positional.empty())
+    throw Usage_error("unexpected argument '" + positional[0] + "'");
+  o.json_ = args.flag("--json");
+  o.quiet_ = args.flag("--quiet");
+  o.force_ = args.flag("--force");
+  o.quiet_silences_summary_ = quiet_summary_;
+
+  o.kvs_ = {Octree::default_bucket_size};
+  if (has_kv_) {
+    o.kvs_ = parse_bucket_list(args.get("--kv", kv_default_));
+    if (!kv_list_ && o.kvs_.size() != 1) throw Usage_error("--kv takes one value here");
+  }
+  o.max_depth_ = Octree::default_max_depth;
+  if (has_max_depth_) {
+    const double depth = args.get_double("--max-depth", double(Octree::default_max_depth));
+    if (depth < 1 || depth > 64 || depth != std::floor(depth))
+      throw Usage_error("--max-depth must be in 1..64");
+    o.max_depth_ = static_cast<std::size_t>(depth);
+  }
+
+  // Output files: the format, never an input, never twice the same file.
+  std::vector<std::string> inputs;
+  if (!o.input_.empty()) inputs.push_back(o.input_);
+  for (const Declared& d : specific_)
+    if (d.input_file && args.has(d.name)) inputs.push_back(args.get(d.name));
+  for (const Output_decl& d : outputs_) {
+    std::string value;
+    const std::string label = d.option.empty() ? "-o" : d.option;
+    if (d.option.empty()) {
+      if (args.has("-o") && args.has("--output")) throw Usage_error("give -o or --output once");
+      value = args.has("-o") ? args.get("-o") : args.get("--output");
+    } else
+      value = args.get(d.option);
+    if (value.empty()) {
+      if (d.required) throw Usage_error("missing " + label + " " + d.value_name);
+      continue;
+    }
+    if (d.extension.empty()) {
+      if (!CGAL::PR_star_octree::IO::is_writable_extension(value))
+        throw Usage_error(value + ": cannot write this format (writable: " +
+                          CGAL::PR_star_octree::IO::writable_extensions() + ")");
+    } else if (!ends_with(value, d.extension))
+      throw Usage_error(value + ": the output must be a " + d.extension + " file");
+    for (const std::string& in : inputs)
+      if (same_file(value, in)) throw Usage_error("the output " + value + " would overwrite the input");
+    for (const auto& earlier : o.outputs_)
+      if (same_file(value, earlier.second))
+        throw Usage_error((earlier.first.empty() ? "-o" : earlier.first) + " and " + label +
+                          " name the same file");
+    o.outputs_.push_back({d.option, value});
+  }
+
+  if (check_) check_(o);
+
+  for (const auto& out : o.outputs_)
+    if (file_exists(out.second) && !o.force_)
+      throw std::runtime_error(out.second + ": the file exists (use --force to overwrite it)");
+  return o;
+}
+
+std::string Options::output(const std::string& option) const {
+  for (const auto& o : outputs_)
+    if (o.first == option) return o.second;
+  return "";
+}
+
+std::vector<std::size_t> parse_bucket_list(const std::string& s) {
+  std::vector<std::size_t> r;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = s.find(',', start);
+    r.push_back(parse_bucket_size(s.substr(start, comma - start)));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return r;
+}
+
+Json& json_kv(Json& j, std::size_t kv) {
+  if (kv == Octree::infinite_bucket_size) return j.value("inf");
+  return j.value(kv);
+}
+
+Mesh read_mesh(const std::string& file, Progress_bar& progress) {
+  struct stat st;
+  const bool sized = ::stat(file.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+  progress.phase("reading " + file + (sized ? " (" + human_bytes(double(st.st_size)) + ")" : ""));
+  Mesh mesh;
+  CGAL::PR_star_octree::IO::read_tetrahedral_mesh(file, mesh);
+  progress.finish();
+  return mesh;
+}
+
+void write_through_temporary(const std::string& out, const std::function<void(const std::string&)>& write) {
+  const std::size_t dot = out.find_last_of('.');
+  const std::size_t slash = out.find_last_of('/');
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  const std::string mark = ".prstar-tmp-" + std::to_string(::getpid());
+  const std::string tmp = has_ext ? out.substr(0, dot) + mark + out.substr(dot) : out + mark;
+  install_signal_cleanup();
+  if (tmp.size() < sizeof pending_temporary) {
+    std::memcpy(pending_temporary, tmp.c_str(), tmp.size() + 1);
+    has_pending_temporary = 1;
+  }
+  try {
+    write(tmp);
+    if (std::rename(tmp.c_str(), out.c_str()) != 0)
+      throw std::runtime_error(out + ": cannot write the output file");
+  } catch (const std::bad_alloc&) {
+    has_pending_temporary = 0;
+    std::remove(tmp.c_str());
+    throw;
+  } catch (const std::exception& e) {
+    has_pending_temporary = 0;
+    std::remove(tmp.c_str());
+    // The user knows the output by its name, not by the temporary's.
+    throw std::runtime_error(replace_all(e.what(), tmp, out));
+  } catch (...) {
+    has_pending_temporary = 0;
+    std::remove(tmp.c_str());
+    throw;
+  }
+  has_pending_temporary = 0;
+}
+
+void write_mesh_file(const std::string& out, const Mesh& mesh) {
+  write_through_temporary(
+      out, [&](const std::string& tmp) { CGAL::PR_star_octree::IO::write_tetrahedral_mesh(tmp, mesh); });
+}
+
+void write_vtu_file(const std::string& out, const Mesh& mesh,
+                    const std::vector<CGAL::PR_star_octree::Point_data_array>& arrays) {
+  write_through_temporary(
+      out, [&](const std::string& tmp) { CGAL::PR_star_octree::IO::write_vtu(tmp, mesh, arrays); });
+}
+
+} // namespace prstar

@@ -1,0 +1,176 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The one place where the prstar commands declare, parse, check and document their options, and
+// where the rules every command shares live: exit statuses, the options common to several
+// commands (--kv, --max-depth, -o/--output, --force, --json, --quiet, --help) with one meaning
+// and one help text, and the output-file rules (never the input, an existing file only with
+// --force, written through a temporary renamed at the end).
+
+#ifndef PRSTAR_COMMAND_H
+#define PRSTAR_COMMAND_H
+
+#include "cli.h"
+#include "progress.h"
+
+#include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace prstar {
+
+/// The exit status of every command.
+enum Exit_status : int {
+  exit_success = 0,      ///< done (validate: the mesh is valid)
+  exit_error = 1,        ///< an error: unreadable or malformed file, bad input, cannot write
+  exit_usage = 2,        ///< a usage error: unknown option, missing or invalid argument
+  exit_invalid_mesh = 3, ///< validate only: the mesh was checked and is not valid
+};
+
+using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
+
+class Options;
+
+/// A command: its name, what it does, its options, and the function that runs it.
+///
+/// The common options are declared with the dedicated members, which fix their names, value
+/// syntax, checks and help text; command-specific options with `option()` and `flag()`.  The
+/// usage line and the option list of `--help` are generated from the declarations.
+class Command {
+public:
+  using Run = std::function<int(const Options&)>;
+  using Check = std::function<void(const Options&)>;
+
+  Command(std::string name, std::string summary) : name_(std::move(name)), summary_(std::move(summary)) {}
+
+  /// The paragraph of `--help` between the usage line and the options.
+  Command& description(std::string text);
+  /// The command-specific part of the usage line (default: generated from `option()` and
+  /// `flag()`), e.g. "(--target F | --max-length L)".
+  Command& synopsis(std::string text);
+  /// Text printed after the option list by `--help`.
+  Command& epilog(std::function<std::string()> text);
+
+  /// One positional argument, a mesh file that is read and never overwritten.
+  Command& input(std::string name = "MESH");
+  /// --kv: one bucket threshold (`list` false) or a comma-separated list of them.
+  Command& kv(std::string default_value, bool list = false);
+  /// --max-depth: the depth bound of the octree.
+  Command& max_depth();
+  /// -o/--output (`option` empty) or another output option (e.g. "--csv"): a file written by
+  /// the command.  `extension` is the one allowed extension (".vtu"), or empty for every mesh
+  /// format the library writes.  Declaring an output declares --force.
+  Command& output(std::string value_name, std::string extension, std::string help, bool required = false,
+                  std::string option = "");
+  /// The key list (or other detail) added to the help text of --json.
+  Command& json_keys(std::string help);
+  /// --quiet also silences the summary on stdout (commands whose result is a file).
+  Command& quiet_silences_summary();
+  /// A command-specific option with a value; `input_file`: it names a file that is read, which
+  /// no output may overwrite.
+  Command& option(std::string name, std::string value_name, std::string help, bool input_file = false);
+  /// A command-specific flag.
+  Command& flag(std::string name, std::string help);
+  /// Command-specific checks of the parsed options, run after the common ones and before the
+  /// output files are checked for existence; they throw `Usage_error`.
+  Command& check(Check f);
+  /// The function that runs the command; it returns an `Exit_status`.
+  Command& run(Run f);
+
+  const std::string& name() const { return name_; }
+  const std::string& summary() const { return summary_; }
+  std::string help() const;
+  /// Parses `argv[first..argc)`, checks the options and the output files.
+  /// \throws Usage_error (exit status 2) or std::runtime_error (an existing output without --force)
+  Options parse(int argc, char** argv, int first) const;
+  int execute(const Options& options) const { return run_(options); }
+
+private:
+  struct Declared {
+    std::string name, value_name, help; // value_name empty: a flag
+    bool input_file;
+  };
+  struct Output_decl {
+    std::string option, value_name, extension, help;
+    bool required;
+  };
+  friend class Options;
+  std::string usage_line() const;
+
+  std::string name_, summary_, description_, synopsis_;
+  std::function<std::string()> epilog_;
+  std::string input_;
+  bool has_kv_ = false, kv_list_ = false, has_max_depth_ = false, quiet_summary_ = false;
+  std::string kv_default_, json_keys_;
+  std::vector<Output_decl> outputs_;
+  std::vector<Declared> specific_;
+  Check check_;
+  Run run_;
+};
+
+/// The parsed and checked options of a command.
+class Options {
+public:
+  /// The input mesh file (commands with `Command::input()`).
+  const std::string& input() const { return input_; }
+  /// The bucket threshold (a single --kv) and all of them (a list).
+  std::size_t kv() const { return kvs_.front(); }
+  const std::vector<std::size_t>& kvs() const { return kvs_; }
+  std::size_t max_depth() const { return max_depth_; }
+  /// An output file, empty when not given: `output()` is -o/--output, `output("--csv")` another.
+  std::string output(const std::string& option = "") const;
+  bool force() const { return force_; }
+  bool json() const { return json_; }
+  bool quiet() const { return quiet_; }
+  /// Progress on stderr is wanted (the bar also needs a terminal): neither --quiet nor --json.
+  bool show_progress() const { return !quiet_ && !json_; }
+  /// A summary on stdout is wanted (--quiet silences it for commands whose result is a file).
+  bool show_summary() const { return !(quiet_ && quiet_silences_summary_); }
+
+  /// Command-specific options.
+  bool flag(const std::string& name) const { return args_.flag(name); }
+  bool has(const std::string& name) const { return args_.has(name); }
+  std::string get(const std::string& name, const std::string& fallback = "") const {
+    return args_.get(name, fallback);
+  }
+  double get_double(const std::string& name, double fallback) const {
+    return args_.get_double(name, fallback);
+  }
+
+private:
+  friend class Command;
+  explicit Options(Arguments args) : args_(std::move(args)) {}
+  Arguments args_;
+  std::string input_;
+  std::vector<std::size_t> kvs_;
+  std::size_t max_depth_ = 0;
+  std::vector<std::pair<std::string, std::string>> outputs_;
+  bool force_ = false, json_ = false, quiet_ = false, quiet_silences_summary_ = false;
+};
+
+/// Parses "N|inf[,N|inf...]".
+std::vector<std::size_t> parse_bucket_list(const std::string& s);
+/// k_v as a JSON value: a number, or the string "inf".
+Json& json_kv(Json& j, std::size_t kv);
+
+/// Reads the mesh file `file` (any format the library reads), with a progress line.
+Mesh read_mesh(const std::string& file, Progress_bar& progress);
+
+/// Writes `out` through a temporary file in the same folder, renamed to `out` at the end: an error
+/// (or an interruption by SIGINT, SIGTERM, SIGHUP) never leaves a half-written `out` or the
+/// temporary behind, and an existing `out` stays untouched until the new one is complete.
+/// `write(tmp)` writes the temporary, whose name keeps the extension of `out` (it selects the
+/// format): OUT.mesh -> OUT.prstar-tmp-PID.mesh.
+void write_through_temporary(const std::string& out, const std::function<void(const std::string&)>& write);
+/// `write_through_temporary` with the library's writer chosen by the extension of `out`.
+void write_mesh_file(const std::string& out, const Mesh& mesh);
+/// `write_through_temporary` with the VTU writer and extra point arrays (in the user's order).
+void write_vtu_file(const std::string& out, const Mesh& mesh,
+                    const std::vector<CGAL::PR_star_octree::Point_data_array>& arrays);
+
+} // namespace prstar
+
+#endif // PRSTAR_COMMAND_H
