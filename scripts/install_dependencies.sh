@@ -5,7 +5,8 @@ set -euo pipefail
 # doxygen: for the test `doxygen_warnings` (zero warnings in the reference manual; about 2 s per run,
 # skipped when doxygen is absent).
 packages=(g++ make cmake libcgal-dev libboost-dev libeigen3-dev libtbb-dev libgmp-dev libmpfr-dev
-          libtet1.5-dev zlib1g-dev doxygen)
+          libtet1.5-dev zlib1g-dev liblz4-dev liblzma-dev doxygen
+          python3-vtk9 python3-meshio gmsh xvfb)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

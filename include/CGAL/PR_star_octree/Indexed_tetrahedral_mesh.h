@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,14 @@ struct Indexed_tetrahedral_mesh {
   std::vector<int> tetrahedron_labels;
   /// each array has `points.size()` values
   std::vector<Point_data_array> point_data;
+  /// per-tetrahedron scalar arrays other than the labels (VTK cell data); each has
+  /// `tetrahedra.size()` values
+  std::vector<Point_data_array> cell_data;
+  /// the names of the labels, when the file has them (gmsh `$PhysicalNames`): label -> name
+  std::map<int, std::string> label_names;
+  /// the cells of other types a reader met and did not keep, by type name (e.g. `"triangle"`),
+  /// so that a caller can report them
+  std::map<std::string, std::size_t> skipped_cells;
 
   std::size_t number_of_vertices() const { return points.size(); }
   std::size_t number_of_tetrahedra() const { return tetrahedra.size(); }
