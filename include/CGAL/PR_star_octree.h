@@ -165,6 +165,12 @@ public:
   bool has_scalar_field() const { return has_scalar_; }
   /// one value per vertex (new numbering), or empty
   const std::vector<double>& scalars() const { return scalars_; }
+  /// whether the input mesh gave one label per tetrahedron (e.g. subdomain indices)
+  bool has_tetrahedron_labels() const { return has_labels_; }
+  /// the label of tetrahedron `t` (new numbering), or 0 without labels
+  int tetrahedron_label(Index t) const { return labels_.empty() ? 0 : labels_[t]; }
+  /// one label per tetrahedron (new numbering), or empty
+  const std::vector<int>& tetrahedron_labels() const { return labels_; }
   double scalar(Index v) const { return scalars_[v]; }
   const Geom_traits& geom_traits() const { return gt_; }
   /// the Cartesian coordinates of `p` as `double`s, through the traits' `Compute_x_3`,
@@ -323,6 +329,8 @@ private:
 
   std::vector<Point_3> points_;
   std::vector<double> scalars_;
+  std::vector<int> labels_;
+  bool has_labels_ = false;
   std::vector<Tetrahedron> tetrahedra_;
   std::vector<Node> nodes_;
   std::vector<Node_index> leaves_;

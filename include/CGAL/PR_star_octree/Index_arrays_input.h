@@ -9,6 +9,8 @@
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
 #include <array>
+#include <stdexcept>
+#include <string>
 #include <cstddef>
 #include <iterator>
 #include <type_traits>
@@ -73,10 +75,24 @@ public:
     }
   }
 
+  /// whether labels were given (`set_tetrahedron_labels()`)
+  bool has_tetrahedron_labels() const { return labels_ != nullptr; }
+  /// the label of tetrahedron `t` (0 without labels)
+  int tetrahedron_label(std::size_t t) const { return labels_ ? (*labels_)[t] : 0; }
+  /// references one label per tetrahedron (e.g. subdomain indices); must outlive the adapter
+  /// \throws std::invalid_argument if there is not one label per tetrahedron
+  void set_tetrahedron_labels(const std::vector<int>& labels) {
+    if (labels.size() != number_of_tetrahedra())
+      throw std::invalid_argument("make_input: " + std::to_string(labels.size()) + " labels for " +
+                                  std::to_string(number_of_tetrahedra()) + " tetrahedra");
+    labels_ = &labels;
+  }
+
 private:
   const PointRange* points_;
   const TetrahedronRange* tetrahedra_;
   const ScalarRange* scalars_;
+  const std::vector<int>* labels_ = nullptr;
 };
 
 /// \ingroup PkgPRStarOctreeRef
@@ -96,13 +112,16 @@ make_input(const PointRange& points, const TetrahedronRange& tetrahedra, const S
 }
 
 /// \ingroup PkgPRStarOctreeRef
-/// Adapts an `Indexed_tetrahedral_mesh`; its first point-data array, if any, is the scalar field.
+/// Adapts an `Indexed_tetrahedral_mesh`; its first point-data array, if any, is the scalar field,
+/// and its tetrahedron labels, if any, are the labels.
 template <class P, class I>
 Index_arrays_input<std::vector<P>, std::vector<std::array<I, 4>>, std::vector<double>>
 make_input(const Indexed_tetrahedral_mesh<P, I>& mesh) {
   using Result = Index_arrays_input<std::vector<P>, std::vector<std::array<I, 4>>, std::vector<double>>;
-  if (const Point_data_array* s = mesh.scalar_field()) return Result(mesh.points, mesh.tetrahedra, s->values);
-  return Result(mesh.points, mesh.tetrahedra);
+  const Point_data_array* s = mesh.scalar_field();
+  Result r = s ? Result(mesh.points, mesh.tetrahedra, s->values) : Result(mesh.points, mesh.tetrahedra);
+  if (!mesh.tetrahedron_labels.empty()) r.set_tetrahedron_labels(mesh.tetrahedron_labels);
+  return r;
 }
 
 } // namespace PR_star_octree

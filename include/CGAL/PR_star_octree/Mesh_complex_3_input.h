@@ -115,6 +115,11 @@ public:
 
   /// the scalar value of vertex `i` (0 without a scalar field)
   double scalar(std::size_t i) const { return has_scalars_ ? scalars_[i] : 0.; }
+
+  /// the tetrahedron labels are the subdomain indices of the cells
+  bool has_tetrahedron_labels() const { return true; }
+  /// the subdomain index of the cell of tetrahedron `t`, as an `int`
+  int tetrahedron_label(std::size_t t) const { return static_cast<int>(subdomain_index(t)); }
   /// @}
 
   /// \name Back to the complex

@@ -42,10 +42,13 @@ struct Simplification_statistics {
 /// The simplified mesh and where its vertices come from.
 template <class Point_3>
 struct Simplification_result {
-  /// positively oriented tetrahedra; the point data of the input (its scalar field) carried along
+  /// positively oriented tetrahedra; the point data of the input (its scalar field) and its
+  /// tetrahedron labels carried along
   Indexed_tetrahedral_mesh<Point_3> mesh;
   /// for each output vertex, its index in the input (a half-edge collapse never moves a vertex)
   std::vector<std::size_t> input_vertex;
+  /// for each output tetrahedron, its index in the input (its label, if any, is the input's)
+  std::vector<std::size_t> input_tetrahedron;
   Simplification_statistics statistics;
 };
 

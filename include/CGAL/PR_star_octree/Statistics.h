@@ -7,6 +7,7 @@
 #define CGAL_PR_STAR_OCTREE_STATISTICS_H
 
 #include <cstddef>
+#include <map>
 
 namespace CGAL {
 namespace PR_star_octree {
@@ -16,6 +17,7 @@ namespace PR_star_octree {
 struct Memory_bytes {
   std::size_t points = 0;          ///< V: coordinates
   std::size_t scalars = 0;         ///< V: the optional scalar field
+  std::size_t labels = 0;          ///< T: the optional tetrahedron labels
   std::size_t tetrahedra = 0;      ///< T: four indices per tetrahedron
   std::size_t nodes = 0;           ///< N: the octree nodes and the list of leaves
   std::size_t leaf_tetrahedra = 0; ///< the shared parts of the leaf lists: (chi - 1) |T| indices
@@ -24,7 +26,7 @@ struct Memory_bytes {
   /// the topological overhead of the PR-star octree: nodes and leaf lists
   std::size_t index() const { return nodes + leaf_tetrahedra; }
   /// the indexed mesh it is built on: V and T
-  std::size_t mesh() const { return points + scalars + tetrahedra; }
+  std::size_t mesh() const { return points + scalars + tetrahedra + labels; }
   std::size_t total() const { return index() + mesh() + permutations; }
 };
 
@@ -63,6 +65,9 @@ struct Statistics {
   double ia_total_per_vertex = 0;
 
   Memory_bytes bytes;
+
+  /// the number of tetrahedra of each label (empty when the mesh has no labels)
+  std::map<int, std::size_t> subdomains;
 
   /// fills `chi` and the four cost-model figures from the counts
   void compute_cost_model() {

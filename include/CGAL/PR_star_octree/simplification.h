@@ -129,7 +129,8 @@ auto simplify(const InputMesh& input, const NP& np = parameters::default_values(
   // Validated, oriented copy of the input (the octree does both).
   std::vector<Point_3> points;
   std::vector<typename Octree::Tetrahedron> tets;
-  std::vector<std::size_t> origin;
+  std::vector<std::size_t> origin, tet_origin;
+  std::vector<int> labels;
   {
     const Octree tree(input, options.bucket_size, Octree::default_max_depth, gt);
     points = tree.points();
@@ -137,12 +138,20 @@ auto simplify(const InputMesh& input, const NP& np = parameters::default_values(
     origin.resize(points.size());
     for (std::size_t v = 0; v < points.size(); ++v)
       origin[v] = tree.original_vertex(static_cast<typename Octree::Index>(v));
+    tet_origin.resize(tets.size());
+    for (std::size_t t = 0; t < tets.size(); ++t)
+      tet_origin[t] = tree.original_tetrahedron(static_cast<typename Octree::Index>(t));
+    if (tree.has_tetrahedron_labels()) { // in the input's numbering
+      labels.resize(tets.size());
+      for (std::size_t t = 0; t < tets.size(); ++t)
+        labels[tet_origin[t]] = tree.tetrahedron_label(static_cast<typename Octree::Index>(t));
+    }
   }
   s.input_vertices = points.size();
   s.input_tetrahedra = tets.size();
 
   internal::Local_simplifier<GeomTraits, Priority> simplifier(options, priority, gt);
-  simplifier.run(points, tets, origin, s);
+  simplifier.run(points, tets, origin, tet_origin, s);
 
   s.output_vertices = points.size();
   s.output_tetrahedra = tets.size();
@@ -154,22 +163,37 @@ auto simplify(const InputMesh& input, const NP& np = parameters::default_values(
       a.values[v] = static_cast<double>(input.scalar(origin[v]));
     result.mesh.point_data.push_back(std::move(a));
   }
+  if (!labels.empty()) {
+    result.mesh.tetrahedron_labels.resize(tet_origin.size());
+    for (std::size_t t = 0; t < tet_origin.size(); ++t)
+      result.mesh.tetrahedron_labels[t] = labels[tet_origin[t]];
+  }
   result.input_vertex = std::move(origin);
+  result.input_tetrahedron = std::move(tet_origin);
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
 /// \ingroup PkgPRStarOctreeRef
-/// Simplifies an `Indexed_tetrahedral_mesh` (named parameters as above): every point-data array
-/// (names kept) is carried along, the tetrahedron labels are dropped.
+/// Simplifies an `Indexed_tetrahedral_mesh` (named parameters as above): every point-data array,
+/// every cell-data array and the tetrahedron labels and their names are carried along (a half-edge
+/// collapse keeps the surviving tetrahedra, and their data, as they are).
 template <class P, class I, class NP = parameters::Default_named_parameters>
 auto simplify(const Indexed_tetrahedral_mesh<P, I>& mesh, const NP& np = parameters::default_values()) {
-  auto result = simplify(make_input(mesh.points, mesh.tetrahedra), np);
+  auto input = make_input(mesh.points, mesh.tetrahedra); // the point data is carried below, by name
+  if (!mesh.tetrahedron_labels.empty()) input.set_tetrahedron_labels(mesh.tetrahedron_labels);
+  auto result = simplify(input, np);
   for (const Point_data_array& a : mesh.point_data) {
     Point_data_array b{a.name, std::vector<double>(result.input_vertex.size())};
     for (std::size_t v = 0; v < b.values.size(); ++v) b.values[v] = a.values[result.input_vertex[v]];
     result.mesh.point_data.push_back(std::move(b));
   }
+  for (const Point_data_array& a : mesh.cell_data) {
+    Point_data_array b{a.name, std::vector<double>(result.input_tetrahedron.size())};
+    for (std::size_t t = 0; t < b.values.size(); ++t) b.values[t] = a.values[result.input_tetrahedron[t]];
+    result.mesh.cell_data.push_back(std::move(b));
+  }
+  result.mesh.label_names = mesh.label_names;
   return result;
 }
 

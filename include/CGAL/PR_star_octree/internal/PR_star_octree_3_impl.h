@@ -211,6 +211,15 @@ void PR_star_octree_3<GT, I>::build_tetrahedra(const InputMesh& input,
       ++degenerate_tetrahedra_;
     tetrahedra_[t] = c;
   }
+
+  // The labels, in the new numbering.
+  if constexpr (PR_star_octree::internal::has_tetrahedron_labels<InputMesh>::value) {
+    if (input.has_tetrahedron_labels()) {
+      has_labels_ = true;
+      labels_.resize(nt);
+      for (std::size_t t = 0; t < nt; ++t) labels_[t] = input.tetrahedron_label(tetrahedron_to_original_[t]);
+    }
+  }
 }
 
 template <class GT, class I>
@@ -308,6 +317,8 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
 
   s.bytes.points = points_.capacity() * sizeof(Point_3);
   s.bytes.scalars = scalars_.capacity() * sizeof(double);
+  s.bytes.labels = labels_.capacity() * sizeof(int);
+  for (int l : labels_) ++s.subdomains[l];
   s.bytes.tetrahedra = tetrahedra_.capacity() * sizeof(Tetrahedron);
   s.bytes.nodes = nodes_.capacity() * sizeof(Node) + leaves_.capacity() * sizeof(Node_index);
   s.bytes.leaf_tetrahedra = leaf_tetrahedra_.capacity() * sizeof(Index);

@@ -136,6 +136,14 @@ struct has_scalar_access<T, void_t<decltype(bool(std::declval<const T&>().has_sc
                                    decltype(double(std::declval<const T&>().scalar(std::size_t(0))))>>
     : std::true_type {};
 
+// Optional: `has_tetrahedron_labels()` and `tetrahedron_label(t)` (an `int` per tetrahedron).
+template <class T, class = void>
+struct has_tetrahedron_labels : std::false_type {};
+template <class T>
+struct has_tetrahedron_labels<
+    T, void_t<decltype(bool(std::declval<const T&>().has_tetrahedron_labels())),
+              decltype(int(std::declval<const T&>().tetrahedron_label(std::size_t(0))))>> : std::true_type {};
+
 /// Checks the concept `PRStarOctreeInputMesh` (for an octree whose points are `Point_3`).
 template <class InputMesh, class Point_3>
 struct Check_input_mesh {

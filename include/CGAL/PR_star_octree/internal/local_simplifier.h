@@ -53,8 +53,10 @@ public:
 
   // `points`, `tets` (vertex indices into points), `origin` (input index of each point) are
   // simplified in place.
+  // `tet_origin` (input index of each tetrahedron) follows the tetrahedra too.
   void run(std::vector<Point_3>& points, std::vector<Tetrahedron>& tets, std::vector<std::size_t>& origin,
-           Simplification_statistics& stats) {
+           std::vector<std::size_t>& tet_origin, Simplification_statistics& stats) {
+    tet_origin_ = &tet_origin;
     const std::size_t input_tets = tets.size();
     target_ = options_.target_fraction > 0
                   ? static_cast<std::size_t>(std::ceil(options_.target_fraction * double(input_tets)))
@@ -211,9 +213,12 @@ private:
       next_origin.push_back(origin[tree.original_vertex(static_cast<Index>(v))]);
     }
     std::vector<Tetrahedron> next_tets;
+    std::vector<std::size_t> next_tet_origin;
     next_tets.reserve(work_.size());
+    next_tet_origin.reserve(work_.size());
     for (std::size_t t = 0; t < work_.size(); ++t) {
       if (deleted_tet_[t]) continue;
+      next_tet_origin.push_back((*tet_origin_)[tree.original_tetrahedron(static_cast<Index>(t))]);
       Tetrahedron c = work_[t];
       for (Index& v : c) v = renumber[v];
       next_tets.push_back(c);
@@ -221,6 +226,7 @@ private:
     points.swap(next_points);
     origin.swap(next_origin);
     tets.swap(next_tets);
+    tet_origin_->swap(next_tet_origin);
     work_.clear();
   }
 
@@ -263,6 +269,7 @@ private:
   Priority priority_;
   GeomTraits gt_;
   Simplification_statistics* stats_ = nullptr;
+  std::vector<std::size_t>* tet_origin_ = nullptr;
   std::size_t target_ = 0, removed_ = 0;
   double threshold_ = 0;
   Index vb_ = 0, ve_ = 0;
