@@ -76,4 +76,23 @@ public:
   double scalar(std::size_t i) const;
 
   /// @}
+
+  /// \name The optional tetrahedron labels
+  /// Both functions may be absent: the mesh then has no labels.  When they exist and
+  /// `has_tetrahedron_labels()` is `true`, `CGAL::PR_star_octree_3` keeps one label per tetrahedron
+  /// (`tetrahedron_label()`, per-label counts in its statistics) and `CGAL::PR_star_octree::simplify()`
+  /// carries them to its output.
+  /// @{
+
+  /*!
+  returns whether the mesh carries one label per tetrahedron (e.g. subdomain indices).
+  */
+  bool has_tetrahedron_labels() const;
+
+  /*!
+  returns the label of tetrahedron `t`.
+  */
+  int tetrahedron_label(std::size_t t) const;
+
+  /// @}
 };
