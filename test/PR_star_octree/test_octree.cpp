@@ -125,7 +125,6 @@ std::map<std::vector<double>, std::set<std::size_t>> check_invariants(const Tree
   std::vector<Index> leaf_of(nv);
   std::vector<CGAL::Bbox_3> boxes;
   for (auto n : tree.leaves()) boxes.push_back(tree.node_bbox(n));
-  const bool brute = nv * tree.number_of_leaves() <= 40000000;
   for (std::size_t l = 0; l < tree.number_of_leaves(); ++l) {
     const auto& nd = tree.node(tree.leaves()[l]);
     for (Index v = nd.vertex_begin; v < nd.vertex_end; ++v) {
@@ -135,14 +134,18 @@ std::map<std::vector<double>, std::set<std::size_t>> check_invariants(const Tree
       CHECK(tree.locate(tree.point(v)) == tree.leaves()[l]);
     }
   }
-  if (brute) {
-    for (std::size_t v = 0; v < nv; ++v) {
-      int inside = 0;
-      for (std::size_t l = 0; l < boxes.size(); ++l)
-        inside += in_box(tree.point(static_cast<Index>(v)), boxes[l], root);
-      CHECK(inside == 1);
-    }
+  // In no other leaf box: every vertex when |V| |leaves| is small, a regular sample of them
+  // otherwise (at most about 4e7 box tests).
+  const std::size_t work = nv * tree.number_of_leaves();
+  const std::size_t stride = work <= 40000000 ? 1 : work / 40000000 + 1;
+  std::size_t sampled = 0;
+  for (std::size_t v = 0; v < nv; v += stride, ++sampled) {
+    int inside = 0;
+    for (std::size_t l = 0; l < boxes.size(); ++l)
+      inside += in_box(tree.point(static_cast<Index>(v)), boxes[l], root);
+    CHECK_EQUAL(inside, 1);
   }
+  CHECK(nv == 0 || sampled > 0);
 
   // Each tetrahedron is listed in exactly the leaves of its vertices.
   std::vector<std::set<Index>> listed(nt);
@@ -259,6 +262,11 @@ void test_hand_checked() {
   CHECK(one.statistics().empty_leaves == 6);
   CHECK(one.statistics().chi == 1.0);
   check_invariants(one, in, "hand-checked, k_v = 9");
+  // The same through the named-parameter constructor.
+  CGAL::PR_star_octree_3<> one_np(in, CGAL::PR_star_octree::parameters::bucket_size(std::size_t(9)));
+  CHECK_EQUAL(one_np.bucket_size(), std::size_t(9));
+  CHECK_EQUAL(one_np.number_of_nodes(), one.number_of_nodes());
+  CHECK_EQUAL(one_np.node(8).number_of_vertices(), std::size_t(1));
 
   // k_v = 1: every vertex in its own leaf; chi = (6 * 4 + 4) / 7.
   CGAL::PR_star_octree_3<> tiny(in, 1);
@@ -297,6 +305,11 @@ void test_duplicates_and_depth() {
   CHECK(shallow.depth() == 2);
   CHECK(shallow.statistics().depth_limited_leaves > 0);
   CHECK(shallow.number_of_nodes() == 1 + 8 + 64);
+  namespace params = CGAL::PR_star_octree::parameters;
+  CGAL::PR_star_octree_3<> shallow_np(cin, params::bucket_size(std::size_t(2)).maximum_depth(std::size_t(2)));
+  CHECK_EQUAL(shallow_np.max_depth(), std::size_t(2));
+  CHECK_EQUAL(shallow_np.number_of_nodes(), std::size_t(1 + 8 + 64));
+  CHECK_EQUAL(shallow_np.statistics().depth_limited_leaves, shallow.statistics().depth_limited_leaves);
   check_invariants(shallow, cin, "depth bound 2");
 
   // Empty mesh and a single point.
