@@ -205,6 +205,7 @@ private:
 } // namespace CGAL
 
 #include <CGAL/PR_star_octree/internal/Leaf_topology_impl.h>
+#include <CGAL/PR_star_octree/internal/parallel_leaves.h>
 
 namespace CGAL {
 namespace PR_star_octree {
@@ -297,27 +298,42 @@ struct Simplex_counts {
 /// leaves: each simplex is counted by the leaf owning its smallest vertex.
 /// \param tree the octree
 /// \param np optional named parameters: `progress(F)` (see `for_each_leaf()`).
-template <class GT, class I, class NP = parameters::Default_named_parameters>
+/// \tparam ConcurrencyTag `CGAL::Parallel_tag`, `CGAL::Sequential_tag` or the default
+///         `CGAL::Parallel_if_available_tag` (the same counts either way)
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, class I,
+          class NP = parameters::Default_named_parameters>
 Simplex_counts count_simplices(const PR_star_octree_3<GT, I>& tree,
                                const NP& np = parameters::default_values()) {
   using Octree = PR_star_octree_3<GT, I>;
-  Simplex_counts s;
-  s.tetrahedra = tree.number_of_tetrahedra();
-  for_each_leaf(
-      tree, VERTEX_TETRAHEDRA | EDGES | TRIANGLES,
-      [&](const Leaf_topology<Octree>& local) {
+  // One slot per leaf (vertices, edges, triangles, boundary and non-manifold triangles), summed in
+  // leaf order.
+  std::vector<std::array<std::size_t, 5>> per_leaf(tree.number_of_leaves());
+  internal::process_leaves<ConcurrencyTag>(
+      tree, VERTEX_TETRAHEDRA | EDGES | TRIANGLES, 0,
+      [&](int, const Leaf_topology<Octree>& local, std::size_t leaf) {
+        std::array<std::size_t, 5> c{{0, 0, 0, 0, 0}};
         for (auto v = local.vertex_begin(); v < local.vertex_end(); ++v)
-          if (!local.vertex_tetrahedra(v).empty()) ++s.vertices;
-        for (std::size_t e = 0; e < local.number_of_edges(); ++e) s.edges += local.owns_edge(e);
+          if (!local.vertex_tetrahedra(v).empty()) ++c[0];
+        for (std::size_t e = 0; e < local.number_of_edges(); ++e) c[1] += local.owns_edge(e);
         for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
           if (!local.owns_triangle(f)) continue;
-          ++s.triangles;
+          ++c[2];
           const std::size_t n = local.triangle_tetrahedra(f).size();
-          s.boundary_triangles += (n == 1);
-          s.nonmanifold_triangles += (n > 2);
+          c[3] += (n == 1);
+          c[4] += (n > 2);
         }
+        per_leaf[leaf] = c;
       },
-      np);
+      internal::Progress_reporter<NP>(np));
+  Simplex_counts s;
+  s.tetrahedra = tree.number_of_tetrahedra();
+  for (const auto& c : per_leaf) {
+    s.vertices += c[0];
+    s.edges += c[1];
+    s.triangles += c[2];
+    s.boundary_triangles += c[3];
+    s.nonmanifold_triangles += c[4];
+  }
   return s;
 }
 

@@ -13,6 +13,7 @@
 
 #include <CGAL/PR_star_octree/Leaf_topology.h>
 #include <CGAL/PR_star_octree/internal/local_complex.h>
+#include <CGAL/PR_star_octree/internal/parallel_leaves.h>
 #include <CGAL/PR_star_octree/parameters.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -107,17 +108,20 @@ namespace internal {
 
 // The boundary pass, in the octree's numbering: `types[v]` for every vertex, and, with
 // `with_triangles`, `on_triangle(t, k)` for every boundary triangle (the face opposite vertex `k`
-// of tetrahedron `t`), each reported once, by the leaf owning its smallest vertex.
-template <class Octree, class TriangleVisitor, class NP>
+// of tetrahedron `t`), each reported once, by the leaf owning its smallest vertex, in leaf order
+// (also in parallel: the triangles are then buffered per leaf).
+template <class ConcurrencyTag, class Octree, class TriangleVisitor, class NP>
 void classify_vertices(const Octree& tree, bool with_triangles, std::vector<Vertex_type>& types,
                        TriangleVisitor on_triangle, const NP& np) {
   using Index = typename Octree::Index;
+  constexpr bool parallel = is_parallel<ConcurrencyTag>();
   types.assign(tree.number_of_vertices(), Vertex_type::UNREFERENCED);
-  Vertex_classifier<Octree> classifier(np);
+  std::vector<std::vector<std::pair<Index, int>>> buffered(
+      parallel && with_triangles ? tree.number_of_leaves() : 0);
   const unsigned relations = VERTEX_TETRAHEDRA | (with_triangles ? TRIANGLES : 0u);
-  for_each_leaf(
-      tree, relations,
-      [&](const Leaf_topology<Octree>& local) {
+  process_leaves<ConcurrencyTag>(
+      tree, relations, Vertex_classifier<Octree>(np),
+      [&](Vertex_classifier<Octree>& classifier, const Leaf_topology<Octree>& local, std::size_t leaf) {
         for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v)
           types[v] = classifier.classify(local, v);
         if (!with_triangles) return;
@@ -128,10 +132,15 @@ void classify_vertices(const Octree& tree, bool with_triangles, std::vector<Vert
           const auto& tri = local.triangle(f);
           int k = 0;
           while (c[k] == tri[0] || c[k] == tri[1] || c[k] == tri[2]) ++k;
-          on_triangle(t, k);
+          if constexpr (parallel)
+            buffered[leaf].emplace_back(t, k);
+          else
+            on_triangle(t, k);
         }
       },
-      np);
+      Progress_reporter<NP>(np));
+  for (const auto& leaf : buffered)
+    for (const auto& x : leaf) on_triangle(x.first, x.second);
 }
 
 } // namespace internal
@@ -154,7 +163,12 @@ void classify_vertices(const Octree& tree, bool with_triangles, std::vector<Vert
 ///   `std::array<std::size_t, 3>` of user vertex indices oriented outward (its normal by the
 ///   right-hand rule points out of the mesh)
 /// - `progress(F)`: called as `F(done, total)` after each leaf
-template <class GT, class I, class VertexTypeMap, class NP = parameters::Default_named_parameters>
+///
+/// \tparam ConcurrencyTag `CGAL::Parallel_tag` (leaves processed by several threads with TBB),
+///         `CGAL::Sequential_tag`, or the default `CGAL::Parallel_if_available_tag`; the results are the
+///         same, in the same order
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, class I, class VertexTypeMap,
+          class NP = parameters::Default_named_parameters>
 Boundary_counts compute_boundary(const PR_star_octree_3<GT, I>& tree, VertexTypeMap vertex_type_map,
                                  const NP& np = parameters::default_values()) {
   using parameters::choose_parameter;
@@ -168,7 +182,7 @@ Boundary_counts compute_boundary(const PR_star_octree_3<GT, I>& tree, VertexType
 
   std::vector<Vertex_type> types;
   std::vector<char> has_face(with_triangles ? tree.number_of_tetrahedra() : 0, 0);
-  internal::classify_vertices(
+  internal::classify_vertices<ConcurrencyTag>(
       tree, with_triangles, types,
       [&](I t, int k) {
         ++r.boundary_triangles;

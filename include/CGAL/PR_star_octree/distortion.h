@@ -11,6 +11,7 @@
 /// seen as a hypersurface of R^4 through the tetrahedral mesh lifted by f.
 
 #include <CGAL/PR_star_octree/boundary.h>
+#include <CGAL/PR_star_octree/internal/parallel_leaves.h>
 #include <CGAL/PR_star_octree/internal/solid_angle.h>
 #include <CGAL/PR_star_octree/parameters.h>
 
@@ -191,23 +192,33 @@ Vertex_curvature vertex_curvature(const Leaf_topology<Octree>& local, const Fiel
 /// \param field the scalar field
 /// \param curvature_map receives the curvature of each vertex
 /// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf
-template <class GT, class I, class FieldMap, class CurvatureMap,
-          class NP = parameters::Default_named_parameters>
+/// \tparam ConcurrencyTag `CGAL::Parallel_tag`, `CGAL::Sequential_tag` or the default
+///         `CGAL::Parallel_if_available_tag`: the same values either way, bit for bit (in parallel,
+///         the field map is read from several threads)
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, class I, class FieldMap,
+          class CurvatureMap, class NP = parameters::Default_named_parameters>
 Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const FieldMap& field,
                                      CurvatureMap curvature_map,
                                      const NP& np = parameters::default_values()) {
   using Octree = PR_star_octree_3<GT, I>;
+  constexpr bool parallel = internal::is_parallel<ConcurrencyTag>();
+  struct State {
+    Vertex_classifier<Octree> classifier;
+    std::vector<double> s3, s4;
+  };
   Vertex_type_counts counts;
-  Vertex_classifier<Octree> classifier;
-  std::vector<double> s3, s4;
-  for_each_leaf(
-      tree, VERTEX_TETRAHEDRA,
-      [&](const Leaf_topology<Octree>& local) {
+  // In parallel, the leaves write their own slots of `result` (octree numbering), copied to the
+  // user's map afterwards; sequentially, each leaf writes to the map directly.
+  std::vector<Vertex_curvature> result(parallel ? tree.number_of_vertices() : 0);
+  internal::process_leaves<ConcurrencyTag>(
+      tree, VERTEX_TETRAHEDRA, State(),
+      [&](State& state, const Leaf_topology<Octree>& local, std::size_t) {
         // Each tetrahedron of the leaf once: its coordinates and field values are read once for
         // all its corners in the leaf.  The leaf's list is in increasing order, as every star, so
         // each vertex sums its corners in the same order as `vertex_curvature()`.
         const I vb = local.vertex_begin();
         const std::size_t nv = local.vertex_end() - vb;
+        std::vector<double>&s3 = state.s3, &s4 = state.s4;
         s3.assign(nv, 0.);
         s4.assign(nv, 0.);
         std::array<std::array<double, 3>, 4> p;
@@ -228,12 +239,21 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
         }
         for (std::size_t i = 0; i < nv; ++i) {
           const I v = static_cast<I>(vb + i);
-          const Vertex_curvature c = internal::finish_curvature(s3[i], s4[i], classifier.classify(local, v));
-          counts.add(c.type);
-          put(curvature_map, static_cast<std::size_t>(tree.original_vertex(v)), c);
+          const Vertex_curvature c =
+              internal::finish_curvature(s3[i], s4[i], state.classifier.classify(local, v));
+          if constexpr (parallel)
+            result[v] = c;
+          else {
+            counts.add(c.type);
+            put(curvature_map, static_cast<std::size_t>(tree.original_vertex(v)), c);
+          }
         }
       },
-      np);
+      internal::Progress_reporter<NP>(np));
+  for (std::size_t v = 0; v < result.size(); ++v) {
+    counts.add(result[v].type);
+    put(curvature_map, static_cast<std::size_t>(tree.original_vertex(static_cast<I>(v))), result[v]);
+  }
   return counts;
 }
 
@@ -248,8 +268,8 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
 /// \param np optional named parameters: `domain_curvature_map(PMap)` receives the 3D concentrated
 /// curvature of the domain (value `double`), `vertex_type_map(PMap)` the `Vertex_type` of each
 /// vertex (both keyed by the user's vertex index); `progress(F)` as in `for_each_leaf()`
-template <class GT, class I, class FieldMap, class DistortionMap,
-          class NP = parameters::Default_named_parameters>
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, class I, class FieldMap,
+          class DistortionMap, class NP = parameters::Default_named_parameters>
 Vertex_type_counts compute_discrete_distortion(const PR_star_octree_3<GT, I>& tree, const FieldMap& field,
                                                DistortionMap distortion_map,
                                                const NP& np = parameters::default_values()) {
@@ -259,7 +279,7 @@ Vertex_type_counts compute_discrete_distortion(const PR_star_octree_3<GT, I>& tr
                                       decltype(get_parameter(np, internal_np::vertex_type_map))>
       split{distortion_map, get_parameter(np, internal_np::domain_curvature_map),
             get_parameter(np, internal_np::vertex_type_map)};
-  return compute_curvature(tree, field, split, np);
+  return compute_curvature<ConcurrencyTag>(tree, field, split, np);
 }
 
 /// \ingroup PkgPRStarOctreeRef

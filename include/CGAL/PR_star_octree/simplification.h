@@ -213,7 +213,7 @@ Collapse_check check_half_edge_collapse(const PR_star_octree_3<GT, I>& tree, I v
   r.edge_exists = !st_e.empty();
   if (!r.edge_exists) return r;
   std::vector<Vertex_type> types;
-  internal::classify_vertices(
+  internal::classify_vertices<CGAL::Sequential_tag>(
       tree, false, types, [](Index, int) {}, parameters::default_values());
   r.boundary = tester.boundary_ok(tree.tetrahedra(), st_e, v1, v2, types[v1], types[v2]);
   r.geometry = tester.geometry_ok(tree.geom_traits(), tree.points(), tree.tetrahedra(), st2, v1, v2);

@@ -59,7 +59,10 @@ struct Validity_result {
 /// \param tree the octree of the mesh
 /// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf of
 /// each of the two passes (`total` is twice the number of leaves)
-template <class GT, class I, class NP = parameters::Default_named_parameters>
+/// \tparam ConcurrencyTag `CGAL::Parallel_tag`, `CGAL::Sequential_tag` or the default
+///         `CGAL::Parallel_if_available_tag` (the same result either way)
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, class I,
+          class NP = parameters::Default_named_parameters>
 Validity_result check_validity(const PR_star_octree_3<GT, I>& tree,
                                const NP& np = parameters::default_values()) {
   using Octree = PR_star_octree_3<GT, I>;
@@ -70,39 +73,53 @@ Validity_result check_validity(const PR_star_octree_3<GT, I>& tree,
   const std::size_t leaves = tree.number_of_leaves();
 
   // Euler characteristic and non-manifold triangles: simplices counted by their owning leaf.
-  const Simplex_counts counts = count_simplices(
+  const Simplex_counts counts = count_simplices<ConcurrencyTag>(
       tree, parameters::progress([&](std::size_t done, std::size_t) { report(done, 2 * leaves); }));
   r.euler_characteristic = counts.euler_characteristic();
   r.nonmanifold_triangles = counts.nonmanifold_triangles;
   r.boundary_triangles = counts.boundary_triangles;
 
-  // Orientation of the owned tetrahedra, vertex links, boundary triangles.
+  // Orientation of the owned tetrahedra, vertex links, boundary triangles: per leaf, gathered in
+  // leaf order.
+  struct Leaf_result {
+    std::size_t positive = 0, negative = 0, degenerate = 0, nonmanifold_vertices = 0;
+    std::vector<std::array<Index, 3>> boundary;
+  };
+  std::vector<Leaf_result> per_leaf(leaves);
   auto orientation = tree.geom_traits().orientation_3_object();
-  Vertex_classifier<Octree> classifier;
-  std::vector<std::array<Index, 3>> boundary;
-  boundary.reserve(counts.boundary_triangles);
-  for_each_leaf(
-      tree, VERTEX_TETRAHEDRA | TRIANGLES,
-      [&](const Leaf_topology<Octree>& local) {
+  internal::process_leaves<ConcurrencyTag>(
+      tree, VERTEX_TETRAHEDRA | TRIANGLES, Vertex_classifier<Octree>(),
+      [&](Vertex_classifier<Octree>& classifier, const Leaf_topology<Octree>& local, std::size_t leaf) {
+        Leaf_result& lr = per_leaf[leaf];
         const auto owned = local.tetrahedra().owned();
         for (Index t = owned.first; t < owned.second; ++t) {
           const auto& c = tree.tetrahedron(t);
           const CGAL::Orientation o =
               orientation(tree.point(c[0]), tree.point(c[1]), tree.point(c[2]), tree.point(c[3]));
           if (o == CGAL::COPLANAR)
-            ++r.degenerate;
+            ++lr.degenerate;
           else if ((o == CGAL::POSITIVE) != tree.is_reoriented(t)) // the user's sign
-            ++r.positive;
+            ++lr.positive;
           else
-            ++r.negative;
+            ++lr.negative;
         }
         for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v)
-          r.nonmanifold_vertices += classifier.classify(local, v) == Vertex_type::NONMANIFOLD;
+          lr.nonmanifold_vertices += classifier.classify(local, v) == Vertex_type::NONMANIFOLD;
         for (std::size_t f = 0; f < local.number_of_triangles(); ++f)
           if (local.owns_triangle(f) && local.triangle_tetrahedra(f).size() == 1)
-            boundary.push_back(local.triangle(f));
+            lr.boundary.push_back(local.triangle(f));
       },
-      parameters::progress([&](std::size_t done, std::size_t) { report(leaves + done, 2 * leaves); }));
+      [&](std::size_t done, std::size_t) { report(leaves + done, 2 * leaves); });
+  std::vector<std::array<Index, 3>> boundary;
+  boundary.reserve(counts.boundary_triangles);
+  for (Leaf_result& lr : per_leaf) {
+    r.positive += lr.positive;
+    r.negative += lr.negative;
+    r.degenerate += lr.degenerate;
+    r.nonmanifold_vertices += lr.nonmanifold_vertices;
+    boundary.insert(boundary.end(), lr.boundary.begin(), lr.boundary.end());
+    std::vector<std::array<Index, 3>>().swap(lr.boundary);
+  }
   r.inverted = (std::min)(r.positive, r.negative);
 
   // Boundary components: union-find on the boundary triangles, grouped by their shared edges.

@@ -137,7 +137,7 @@ private:
     threshold_ = threshold;
     const Octree tree(make_input(points, tets), options_.bucket_size, Octree::default_max_depth, gt_);
     std::vector<Vertex_type> types;
-    classify_vertices(
+    classify_vertices<CGAL::Parallel_if_available_tag>(
         tree, false, types, [](Index, int) {}, parameters::default_values());
     const std::vector<Point_3>& pts = tree.points();
     work_ = tree.tetrahedra();
