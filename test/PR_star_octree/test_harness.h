@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <iterator>
@@ -60,8 +61,15 @@ inline long long checks() {
   return counters().checks;
 }
 
-/// Failure messages printed in full; later failures are only counted.
-constexpr long long max_printed_failures = 100;
+/// Failure messages printed in full (100, or $PRSTAR_TEST_MAX_PRINTED); later failures are only
+/// counted.
+inline long long max_printed_failures() {
+  static const long long n = [] {
+    const char* e = std::getenv("PRSTAR_TEST_MAX_PRINTED");
+    return e ? std::atoll(e) : 100LL;
+  }();
+  return n;
+}
 
 inline void record_check() {
   ++counters().checks;
@@ -69,9 +77,9 @@ inline void record_check() {
 
 inline void record_failure(const char* file, int line, const std::string& message) {
   const long long n = ++counters().failures;
-  if (n <= max_printed_failures)
+  if (n <= max_printed_failures())
     std::cerr << file << ":" << line << ": CHECK failed: " << message << std::endl;
-  else if (n == max_printed_failures + 1)
+  else if (n == max_printed_failures() + 1)
     std::cerr << "(further failures are counted, not printed)" << std::endl;
 }
 
