@@ -11,7 +11,9 @@
 /// extension of the file name.
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/gmsh.h>
 #include <CGAL/PR_star_octree/IO/medit.h>
+#include <CGAL/PR_star_octree/IO/meshb.h>
 #include <CGAL/PR_star_octree/IO/tet_off.h>
 #include <CGAL/PR_star_octree/IO/tetgen.h>
 #include <CGAL/PR_star_octree/IO/vtk.h>
@@ -38,13 +40,13 @@ inline std::string lower_extension(const std::string& filename) {
 /// \ingroup PkgPRStarOctreeIO
 /// The extensions `read_tetrahedral_mesh()` accepts, for messages.
 inline const char* readable_extensions() {
-  return ".mesh, .node/.ele, .vtk, .vtu, .off/.ts";
+  return ".mesh, .node/.ele, .vtk, .vtu, .off/.ts, .msh, .meshb";
 }
 
 /// \ingroup PkgPRStarOctreeIO
 /// The extensions `write_tetrahedral_mesh()` accepts, for messages.
 inline const char* writable_extensions() {
-  return ".mesh, .vtu, .off/.ts";
+  return ".mesh, .vtu, .vtk, .off/.ts, .msh, .meshb, .node/.ele";
 }
 
 /// \ingroup PkgPRStarOctreeIO
@@ -52,7 +54,8 @@ inline const char* writable_extensions() {
 /// extension with its dot such as `".vtu"`; case-insensitive).
 inline bool is_readable_extension(const std::string& filename) {
   const std::string e = internal::lower_extension(filename);
-  return e == "mesh" || e == "node" || e == "ele" || e == "vtk" || e == "vtu" || e == "off" || e == "ts";
+  return e == "mesh" || e == "node" || e == "ele" || e == "vtk" || e == "vtu" || e == "off" || e == "ts" ||
+         e == "msh" || e == "meshb";
 }
 
 /// \ingroup PkgPRStarOctreeIO
@@ -60,13 +63,15 @@ inline bool is_readable_extension(const std::string& filename) {
 /// extension with its dot; case-insensitive).
 inline bool is_writable_extension(const std::string& filename) {
   const std::string e = internal::lower_extension(filename);
-  return e == "mesh" || e == "vtu" || e == "off" || e == "ts";
+  return e == "mesh" || e == "vtu" || e == "vtk" || e == "off" || e == "ts" || e == "msh" || e == "meshb" || e == "node" ||
+         e == "ele";
 }
 
 /// \ingroup PkgPRStarOctreeIO
 /// Reads a tetrahedral mesh with the reader chosen by the extension of `filename`
 /// (case-insensitive): `.mesh` (`read_medit()`), `.node` or `.ele` (`read_tetgen()`, both files
-/// being read), `.vtk` (`read_vtk()`), `.vtu` (`read_vtu()`), `.off` or `.ts` (`read_tet_off()`).
+/// being read), `.vtk` (`read_vtk()`), `.vtu` (`read_vtu()`), `.off` or `.ts` (`read_tet_off()`),
+/// `.msh` (`read_gmsh()`), `.meshb` (`read_meshb()`).
 /// \throws Read_error for an unknown extension (the message lists the supported ones) and for any
 /// problem of the file; `mesh` is then left unchanged.
 template <class Mesh>
@@ -82,6 +87,10 @@ void read_tetrahedral_mesh(const std::string& filename, Mesh& mesh) {
     read_vtu(filename, mesh);
   else if (e == "off" || e == "ts")
     read_tet_off(filename, mesh);
+  else if (e == "msh")
+    read_gmsh(filename, mesh);
+  else if (e == "meshb")
+    read_meshb(filename, mesh);
   else
     throw Read_error(filename, 0,
                      (e.empty() ? std::string("no file extension") : "unknown file extension '." + e + "'") +
@@ -90,18 +99,30 @@ void read_tetrahedral_mesh(const std::string& filename, Mesh& mesh) {
 
 /// \ingroup PkgPRStarOctreeIO
 /// Writes `mesh` with the writer chosen by the extension of `filename` (case-insensitive):
-/// `.mesh` (`write_medit()`), `.vtu` (`write_vtu()`, ascii), `.off` or `.ts` (`write_tet_off()`).
+/// `.mesh` (`write_medit()`), `.vtu` (`write_vtu()`: appended and zlib-compressed, ascii with
+/// `CGAL::parameters::use_binary_mode(false)`), `.vtk` (`write_vtk()`: legacy 4.2, ASCII, binary with
+/// `CGAL::parameters::use_binary_mode(true)`), `.off` or `.ts` (`write_tet_off()`),
+/// `.msh` (`write_gmsh()`: 4.1 ASCII), `.meshb` (`write_meshb()`), `.node` or `.ele` (`write_tetgen()`).
 /// \throws Write_error for an unknown extension (the message lists the supported ones), when the
 /// file cannot be written or when the mesh is inconsistent.
-template <class Mesh>
-void write_tetrahedral_mesh(const std::string& filename, const Mesh& mesh) {
+template <class Mesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void write_tetrahedral_mesh(const std::string& filename, const Mesh& mesh,
+                            const NamedParameters& np = CGAL::parameters::default_values()) {
   const std::string e = internal::lower_extension(filename);
   if (e == "mesh")
     write_medit(filename, mesh);
   else if (e == "vtu")
-    write_vtu(filename, mesh);
+    write_vtu(filename, mesh, {}, np);
+  else if (e == "vtk")
+    write_vtk(filename, mesh, {}, np);
   else if (e == "off" || e == "ts")
     write_tet_off(filename, mesh);
+  else if (e == "msh")
+    write_gmsh(filename, mesh);
+  else if (e == "meshb")
+    write_meshb(filename, mesh);
+  else if (e == "node" || e == "ele")
+    write_tetgen(filename, mesh);
   else
     throw Write_error(filename,
                       (e.empty() ? std::string("no file extension") : "unknown file extension '." + e + "'") +

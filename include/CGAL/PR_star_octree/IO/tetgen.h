@@ -14,7 +14,9 @@
 #include <cstddef>
 #include <filesystem>
 #include <system_error>
+#include <fstream>
 #include <istream>
+#include <ostream>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -246,6 +248,80 @@ void read_tetgen(const std::string& node_or_ele_filename, Mesh& mesh) {
   const std::string node_text = load(names.first);
   const std::string ele_text = load(names.second);
   internal::read_tetgen_text(node_text, names.first, ele_text, names.second, mesh);
+}
+
+/// \ingroup PkgPRStarOctreeIO
+/// Writes `mesh` as TetGen `.node` and `.ele` texts to two streams; see
+/// `write_tetgen(const std::string&, const Mesh&)`.
+template <class Mesh>
+void write_tetgen(std::ostream& node, std::ostream& ele, const Mesh& mesh,
+                  const std::string& node_name = "<node stream>", const std::string& ele_name = "<ele stream>") {
+  internal::check_mesh_for_writing(mesh, node_name);
+  std::string buf;
+  const std::size_t na = mesh.point_data.size();
+  internal::append_integer(buf, mesh.points.size());
+  buf += " 3 ";
+  internal::append_integer(buf, na);
+  buf += " 0\n";
+  for (std::size_t i = 0; i < mesh.points.size(); ++i) {
+    const auto& p = mesh.points[i];
+    internal::append_integer(buf, i + 1);
+    for (const double c : {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}) {
+      buf += ' ';
+      internal::append_double(buf, c);
+    }
+    for (const auto& a : mesh.point_data) {
+      buf += ' ';
+      internal::append_double(buf, a.values[i]);
+    }
+    buf += '\n';
+    internal::flush_buffer(node, buf, node_name);
+  }
+  internal::flush_buffer(node, buf, node_name, true);
+  const bool labels = !mesh.tetrahedron_labels.empty();
+  internal::append_integer(buf, mesh.tetrahedra.size());
+  buf += labels ? " 4 1\n" : " 4 0\n";
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
+    internal::append_integer(buf, t + 1);
+    for (const auto v : mesh.tetrahedra[t]) {
+      buf += ' ';
+      internal::append_integer(buf, static_cast<unsigned long long>(v) + 1);
+    }
+    if (labels) {
+      buf += ' ';
+      internal::append_integer(buf, mesh.tetrahedron_labels[t]);
+    }
+    buf += '\n';
+    internal::flush_buffer(ele, buf, ele_name);
+  }
+  internal::flush_buffer(ele, buf, ele_name, true);
+}
+
+/// \ingroup PkgPRStarOctreeIO
+/// Writes `mesh` as a TetGen mesh, given the name of either its `.node` or its `.ele` file (both
+/// are written, the other name gets the same base): 1-based indices as TetGen writes them by
+/// default; the `.node` file holds the point-data arrays as point attributes (in order, so
+/// `read_tetgen()` gives them back as `attribute_k`) and no boundary marker; the `.ele` file has
+/// 4 nodes per tetrahedron and, when the mesh has labels, one attribute: the label (TetGen's region
+/// attribute, read back by `read_tetgen()` as the label).  Names of labels and cell data are not
+/// written.
+/// \throws Write_error when the name does not end with `.node` or `.ele`, a file cannot be
+/// written, or the mesh is inconsistent.
+template <class Mesh>
+void write_tetgen(const std::string& node_or_ele_filename, const Mesh& mesh) {
+  std::pair<std::string, std::string> names;
+  try {
+    names = internal::tetgen_file_names(node_or_ele_filename);
+  } catch (const Read_error&) {
+    throw Write_error(node_or_ele_filename, "a TetGen mesh is written to a '.node' or '.ele' file name");
+  }
+  internal::check_mesh_for_writing(mesh, node_or_ele_filename);
+  std::ofstream node, ele;
+  internal::open_for_writing(node, names.first);
+  internal::open_for_writing(ele, names.second);
+  write_tetgen(node, ele, mesh, names.first, names.second);
+  internal::close_written(node, names.first);
+  internal::close_written(ele, names.second);
 }
 
 } // namespace IO

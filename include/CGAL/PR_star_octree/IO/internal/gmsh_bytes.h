@@ -1,0 +1,125 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_IO_INTERNAL_GMSH_BYTES_H
+#define CGAL_PR_STAR_OCTREE_IO_INTERNAL_GMSH_BYTES_H
+
+// Reading and writing fixed-size binary values in the machine's byte order or in the other one
+// (the binary gmsh `.msh` and Medit `.meshb` files announce their byte order by an integer 1).
+// Every read is bounds-checked; errors name the file and the byte offset.
+
+#include <CGAL/PR_star_octree/IO/Read_error.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+namespace CGAL {
+namespace PR_star_octree {
+namespace IO {
+namespace internal {
+
+/// Reverses the bytes of a trivially copyable value.
+template <class T>
+T byte_swapped(T v) {
+  static_assert(std::is_trivially_copyable<T>::value, "byte_swapped: trivially copyable types only");
+  unsigned char b[sizeof(T)];
+  std::memcpy(b, &v, sizeof(T));
+  std::reverse(b, b + sizeof(T));
+  std::memcpy(&v, b, sizeof(T));
+  return v;
+}
+
+/// The value of type `T` stored at `p` (any alignment), byte-swapped when `swap`.
+template <class T>
+T load_value(const char* p, bool swap) {
+  T v;
+  std::memcpy(&v, p, sizeof(T));
+  return swap ? byte_swapped(v) : v;
+}
+
+/// A read position in a binary buffer held in memory.
+class Byte_cursor {
+public:
+  Byte_cursor(std::string_view data, std::string name, bool swap = false)
+      : data_(data), name_(std::move(name)), swap_(swap) {}
+
+  const std::string& name() const { return name_; }
+  bool swap() const { return swap_; }
+  void set_swap(bool s) { swap_ = s; }
+  std::size_t offset() const { return pos_; }
+  std::size_t size() const { return data_.size(); }
+  std::size_t remaining() const { return data_.size() - pos_; }
+  const char* here() const { return data_.data() + pos_; }
+
+  [[noreturn]] void fail(const std::string& message) const { fail_at(pos_, message); }
+  [[noreturn]] void fail_at(std::size_t offset, const std::string& message) const {
+    throw Read_error(name_, 0, "byte " + std::to_string(offset) + ": " + message);
+  }
+
+  /// Fails with "unexpected end of file" unless `n` more bytes are available.
+  void need(std::size_t n, const char* what) const {
+    if (n > remaining())
+      fail(std::string("unexpected end of file in ") + what + " (" + std::to_string(n) + " bytes needed, " +
+           std::to_string(remaining()) + " left)");
+  }
+  /// Whether `count` items of `item_bytes` bytes each fit in what is left (no overflow).
+  bool fits(std::uint64_t count, std::size_t item_bytes) const {
+    return item_bytes == 0 || count <= remaining() / item_bytes;
+  }
+
+  template <class T>
+  T get(const char* what) {
+    need(sizeof(T), what);
+    const T v = load_value<T>(here(), swap_);
+    pos_ += sizeof(T);
+    return v;
+  }
+  /// An unsigned integer stored on `bytes` (4 or 8) bytes.
+  std::uint64_t get_unsigned(std::size_t bytes, const char* what) {
+    return bytes == 4 ? std::uint64_t(get<std::uint32_t>(what)) : get<std::uint64_t>(what);
+  }
+  /// A signed integer stored on `bytes` (4 or 8) bytes.
+  std::int64_t get_signed(std::size_t bytes, const char* what) {
+    return bytes == 4 ? std::int64_t(get<std::int32_t>(what)) : get<std::int64_t>(what);
+  }
+  /// A real stored on `bytes` (4 or 8) bytes.
+  double get_real(std::size_t bytes, const char* what) {
+    return bytes == 4 ? double(get<float>(what)) : get<double>(what);
+  }
+
+  void skip(std::size_t n, const char* what) {
+    need(n, what);
+    pos_ += n;
+  }
+  void seek(std::size_t offset) { pos_ = std::min(offset, data_.size()); }
+
+private:
+  std::string_view data_;
+  std::string name_;
+  bool swap_;
+  std::size_t pos_ = 0;
+};
+
+/// Appends the bytes of `v` (machine byte order) to `out`.
+template <class T>
+void append_binary(std::string& out, T v) {
+  static_assert(std::is_trivially_copyable<T>::value, "append_binary: trivially copyable types only");
+  char b[sizeof(T)];
+  std::memcpy(b, &v, sizeof(T));
+  out.append(b, sizeof(T));
+}
+
+} // namespace internal
+} // namespace IO
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_IO_INTERNAL_GMSH_BYTES_H
