@@ -11,6 +11,9 @@
 #include <CGAL/PR_star_octree/IO/internal/vtu_writer.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
+#include <CGAL/Named_function_parameters.h>
+
+#include <cmath>
 #include <fstream>
 #include <istream>
 #include <ostream>
@@ -61,25 +64,38 @@ void read_vtu(const std::string& filename, Mesh& mesh) {
   internal::read_vtu_text(text, filename, mesh);
 }
 
-/// \ingroup PkgPRStarOctreeIO
-/// Writes `mesh` to a stream as a VTK XML unstructured grid (`.vtu`): `Float64` points, `Int64`
-/// connectivity and offsets, `UInt8` types (all 10), the point-data arrays of the mesh followed by
-/// `extra_point_data` as `Float64` `PointData` (the first one declared as the active scalars),
-/// and the labels, when the mesh has some, as the `Int32` `CellData` array `label`.
-/// With `binary == false` the arrays are written in ascii with the shortest decimal form that
-/// reads back exactly; with `binary == true` they are inline base64 (`header_type="UInt64"`,
-/// little-endian), exact as well.
-/// \throws Write_error when the stream fails, an extra array does not have one finite value per
-/// vertex, two arrays have the same name, or the mesh is inconsistent.
+namespace internal {
+
+/// Checks the cell-data arrays of a mesh before writing: one finite value per tetrahedron, a name.
 template <class Mesh>
-void write_vtu(std::ostream& out, const Mesh& mesh,
-               const std::vector<Point_data_array>& extra_point_data = {}, bool binary = false,
-               const std::string& name = "<stream>") {
-  internal::check_mesh_for_writing(mesh, name);
+void check_cell_data_for_writing(const Mesh& mesh, const std::string& name) {
+  for (const Point_data_array& a : mesh.cell_data) {
+    if (a.name.empty()) throw Write_error(name, "a cell data array has an empty name");
+    if (a.values.size() != mesh.tetrahedra.size())
+      throw Write_error(name, "cell data '" + a.name + "' has " + std::to_string(a.values.size()) +
+                                  " values for " + std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
+    for (std::size_t i = 0; i < a.values.size(); ++i)
+      if (!std::isfinite(a.values[i]))
+        throw Write_error(name, "cell data '" + a.name + "': value " + std::to_string(i) + " is not finite");
+    if (a.name == "label" && !mesh.tetrahedron_labels.empty())
+      throw Write_error(name, "a cell data array is named 'label', the name of the labels");
+  }
+  for (std::size_t i = 0; i < mesh.cell_data.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (mesh.cell_data[i].name == mesh.cell_data[j].name)
+        throw Write_error(name, "two cell data arrays are named '" + mesh.cell_data[i].name + "'");
+}
+
+template <class Mesh>
+void write_vtu_encoded(std::ostream& out, const Mesh& mesh,
+                       const std::vector<Point_data_array>& extra_point_data, Vtu_encoding encoding,
+                       const std::string& name) {
+  check_mesh_for_writing(mesh, name);
+  check_cell_data_for_writing(mesh, name);
   std::vector<const Point_data_array*> data;
   for (const auto& a : mesh.point_data) data.push_back(&a);
   for (const auto& a : extra_point_data) {
-    internal::check_point_data_for_writing(a, mesh.points.size(), name);
+    check_point_data_for_writing(a, mesh.points.size(), name);
     data.push_back(&a);
   }
   for (std::size_t i = 0; i < data.size(); ++i) {
@@ -90,61 +106,132 @@ void write_vtu(std::ostream& out, const Mesh& mesh,
   }
   const std::size_t nv = mesh.points.size(), nt = mesh.tetrahedra.size();
   std::string buf;
+  Vtu_array_writer w(out, buf, name, encoding);
   buf += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
-         "byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\">\n  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"";
-  internal::append_integer(buf, nv);
+         "byte_order=\"LittleEndian\" header_type=\"UInt64\"";
+  buf += w.compressor_attribute();
+  buf += ">\n  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"";
+  append_integer(buf, nv);
   buf += "\" NumberOfCells=\"";
-  internal::append_integer(buf, nt);
+  append_integer(buf, nt);
   buf += "\">\n";
   if (!data.empty()) {
     buf += "      <PointData Scalars=\"";
-    internal::vtu_escape(buf, data.front()->name);
+    vtu_escape(buf, data.front()->name);
     buf += "\">\n";
     for (const Point_data_array* a : data)
-      internal::vtu_write_array<double>(out, buf, name, "Float64", a->name, 1, nv, binary,
-                                        [&](std::size_t i) { return a->values[i]; });
+      w.write<double>("Float64", a->name, 1, nv, [&](std::size_t i) { return a->values[i]; });
     buf += "      </PointData>\n";
   }
-  if (!mesh.tetrahedron_labels.empty()) {
-    buf += "      <CellData Scalars=\"label\">\n";
-    internal::vtu_write_array<std::int32_t>(
-        out, buf, name, "Int32", "label", 1, nt, binary,
-        [&](std::size_t i) { return std::int32_t(mesh.tetrahedron_labels[i]); });
+  if (!mesh.tetrahedron_labels.empty() || !mesh.cell_data.empty()) {
+    buf += "      <CellData";
+    if (!mesh.tetrahedron_labels.empty()) buf += " Scalars=\"label\"";
+    buf += ">\n";
+    if (!mesh.tetrahedron_labels.empty())
+      w.write<std::int32_t>("Int32", "label", 1, nt,
+                            [&](std::size_t i) { return std::int32_t(mesh.tetrahedron_labels[i]); });
+    for (const Point_data_array& a : mesh.cell_data)
+      w.write<double>("Float64", a.name, 1, nt, [&](std::size_t i) { return a.values[i]; });
     buf += "      </CellData>\n";
   }
   buf += "      <Points>\n";
-  internal::vtu_write_array<double>(out, buf, name, "Float64", "Points", 3, 3 * nv, binary,
-                                    [&](std::size_t i) {
-                                      const auto& p = mesh.points[i / 3];
-                                      return CGAL::to_double(i % 3 == 0 ? p.x() : i % 3 == 1 ? p.y() : p.z());
-                                    });
+  w.write<double>("Float64", "Points", 3, 3 * nv, [&](std::size_t i) {
+    const auto& p = mesh.points[i / 3];
+    return CGAL::to_double(i % 3 == 0 ? p.x() : i % 3 == 1 ? p.y() : p.z());
+  });
   buf += "      </Points>\n      <Cells>\n";
-  internal::vtu_write_array<std::int64_t>(
-      out, buf, name, "Int64", "connectivity", 1, 4 * nt, binary,
-      [&](std::size_t i) { return std::int64_t(mesh.tetrahedra[i / 4][i % 4]); });
-  internal::vtu_write_array<std::int64_t>(out, buf, name, "Int64", "offsets", 1, nt, binary,
-                                          [&](std::size_t i) { return std::int64_t(4 * (i + 1)); });
-  internal::vtu_write_array<std::uint8_t>(out, buf, name, "UInt8", "types", 1, nt, binary,
-                                          [](std::size_t) { return std::uint8_t(10); });
-  buf += "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
-  internal::flush_buffer(out, buf, name, true);
+  w.write<std::int64_t>("Int64", "connectivity", 1, 4 * nt,
+                        [&](std::size_t i) { return std::int64_t(mesh.tetrahedra[i / 4][i % 4]); });
+  w.write<std::int64_t>("Int64", "offsets", 1, nt, [&](std::size_t i) { return std::int64_t(4 * (i + 1)); });
+  w.write<std::uint8_t>("UInt8", "types", 1, nt, [](std::size_t) { return std::uint8_t(10); });
+  buf += "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n";
+  w.finish();
+  buf += "</VTKFile>\n";
+  flush_buffer(out, buf, name, true);
+}
+
+template <class Mesh>
+void write_vtu_file(const std::string& filename, const Mesh& mesh,
+                    const std::vector<Point_data_array>& extra_point_data, Vtu_encoding encoding) {
+  check_mesh_for_writing(mesh, filename);
+  check_cell_data_for_writing(mesh, filename);
+  for (const auto& a : extra_point_data) check_point_data_for_writing(a, mesh.points.size(), filename);
+  std::ofstream out;
+  open_for_writing(out, filename);
+  write_vtu_encoded(out, mesh, extra_point_data, encoding, filename);
+  close_written(out, filename);
+}
+
+template <class NP>
+Vtu_encoding vtu_encoding_from(const NP& np) {
+  const bool binary = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::use_binary_mode), true);
+  return binary ? Vtu_encoding::APPENDED : Vtu_encoding::ASCII;
+}
+
+} // namespace internal
+
+/// \ingroup PkgPRStarOctreeIO
+/// Writes `mesh` to a stream as a VTK XML unstructured grid (`.vtu`): `Float64` points, `Int64`
+/// connectivity and offsets, `UInt8` types (all 10), the point-data arrays of the mesh followed by
+/// `extra_point_data` as `Float64` `PointData` (the first one declared as the active scalars),
+/// the labels, when the mesh has some, as the `Int32` `CellData` array `label` (the active cell
+/// scalars), then the cell-data arrays of the mesh as `Float64` `CellData`.
+///
+/// By default the arrays are appended raw binary data compressed with zlib as ParaView writes them
+/// (`header_type="UInt64"`, `compressor="vtkZLibDataCompressor"`, blocks of 32 KiB; uncompressed
+/// when the build has no zlib); with `CGAL::parameters::use_binary_mode(false)` they are written in
+/// ascii with the shortest decimal form that reads back exactly.  Both are exact.
+///
+/// \tparam NamedParameters a sequence of named parameters
+/// \param out the stream
+/// \param mesh the mesh
+/// \param extra_point_data per-vertex arrays written after those of the mesh
+/// \param np `use_binary_mode` (default `true`: appended, zlib-compressed)
+/// \param name the name of the stream in error messages
+/// \throws Write_error when the stream fails, an array does not have one finite value per vertex
+/// (per tetrahedron for cell data), two arrays have the same name, or the mesh is inconsistent.
+template <class Mesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void write_vtu(std::ostream& out, const Mesh& mesh,
+               const std::vector<Point_data_array>& extra_point_data = {},
+               const NamedParameters& np = CGAL::parameters::default_values(),
+               const std::string& name = "<stream>") {
+  internal::write_vtu_encoded(out, mesh, extra_point_data, internal::vtu_encoding_from(np), name);
 }
 
 /// \ingroup PkgPRStarOctreeIO
-/// Writes `mesh` to the file `filename` as a VTK XML unstructured grid; see
-/// `write_vtu(std::ostream&, const Mesh&, const std::vector<Point_data_array>&, bool, const std::string&)`.
-/// \throws Write_error when the file cannot be written, or for the reasons given there.
+/// Writes `mesh` to a stream as a VTK XML unstructured grid in ascii (`binary == false`) or
+/// uncompressed inline base64 (`binary == true`, `format="binary"`, `header_type="UInt64"`).
+/// \throws Write_error as the other overload.
+template <class Mesh>
+void write_vtu(std::ostream& out, const Mesh& mesh, const std::vector<Point_data_array>& extra_point_data,
+               bool binary, const std::string& name = "<stream>") {
+  internal::write_vtu_encoded(out, mesh, extra_point_data,
+                              binary ? internal::Vtu_encoding::INLINE_BASE64 : internal::Vtu_encoding::ASCII,
+                              name);
+}
+
+/// \ingroup PkgPRStarOctreeIO
+/// Writes `mesh` to the file `filename` as a VTK XML unstructured grid, by default appended and
+/// zlib-compressed (ascii with `CGAL::parameters::use_binary_mode(false)`); see
+/// `write_vtu(std::ostream&, const Mesh&, const std::vector<Point_data_array>&, const NamedParameters&, const
+/// std::string&)`. \throws Write_error when the file cannot be written, or for the reasons given there.
+template <class Mesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void write_vtu(const std::string& filename, const Mesh& mesh,
+               const std::vector<Point_data_array>& extra_point_data = {},
+               const NamedParameters& np = CGAL::parameters::default_values()) {
+  internal::write_vtu_file(filename, mesh, extra_point_data, internal::vtu_encoding_from(np));
+}
+
+/// \ingroup PkgPRStarOctreeIO
+/// Writes `mesh` to the file `filename` in ascii (`binary == false`) or uncompressed inline base64
+/// (`binary == true`).
+/// \throws Write_error as the other overloads.
 template <class Mesh>
 void write_vtu(const std::string& filename, const Mesh& mesh,
-               const std::vector<Point_data_array>& extra_point_data = {}, bool binary = false) {
-  internal::check_mesh_for_writing(mesh, filename);
-  for (const auto& a : extra_point_data)
-    internal::check_point_data_for_writing(a, mesh.points.size(), filename);
-  std::ofstream out;
-  internal::open_for_writing(out, filename);
-  write_vtu(out, mesh, extra_point_data, binary, filename);
-  internal::close_written(out, filename);
+               const std::vector<Point_data_array>& extra_point_data, bool binary) {
+  internal::write_vtu_file(filename, mesh, extra_point_data,
+                           binary ? internal::Vtu_encoding::INLINE_BASE64 : internal::Vtu_encoding::ASCII);
 }
 
 } // namespace IO

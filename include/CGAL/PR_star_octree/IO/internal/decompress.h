@@ -36,11 +36,16 @@ enum class Vtk_compressor { NONE, ZLIB, LZ4, LZMA };
 
 /// The compressor named by a VTK `compressor` attribute; false for an unknown name.
 inline bool vtk_compressor_from_name(const std::string& name, Vtk_compressor& c) {
-  if (name.empty()) c = Vtk_compressor::NONE;
-  else if (name == "vtkZLibDataCompressor") c = Vtk_compressor::ZLIB;
-  else if (name == "vtkLZ4DataCompressor") c = Vtk_compressor::LZ4;
-  else if (name == "vtkLZMADataCompressor") c = Vtk_compressor::LZMA;
-  else return false;
+  if (name.empty())
+    c = Vtk_compressor::NONE;
+  else if (name == "vtkZLibDataCompressor")
+    c = Vtk_compressor::ZLIB;
+  else if (name == "vtkLZ4DataCompressor")
+    c = Vtk_compressor::LZ4;
+  else if (name == "vtkLZMADataCompressor")
+    c = Vtk_compressor::LZMA;
+  else
+    return false;
   return true;
 }
 
@@ -72,7 +77,10 @@ inline bool compressor_available(Vtk_compressor c) {
 }
 
 inline const char* compressor_library(Vtk_compressor c) {
-  return c == Vtk_compressor::ZLIB ? "zlib" : c == Vtk_compressor::LZ4 ? "liblz4" : c == Vtk_compressor::LZMA ? "liblzma" : "none";
+  return c == Vtk_compressor::ZLIB   ? "zlib"
+         : c == Vtk_compressor::LZ4  ? "liblz4"
+         : c == Vtk_compressor::LZMA ? "liblzma"
+                                     : "none";
 }
 
 /// The largest ratio of decompressed to compressed size a sane block can have: 1032 is the
@@ -93,8 +101,8 @@ inline std::uint64_t max_compression_ratio(Vtk_compressor c) {
 
 /// Decompresses `src[0..n)` into exactly `expected` bytes at `dst`; returns nullptr on success,
 /// else what went wrong (`why` may receive the library's message).
-inline const char* decompress_block(Vtk_compressor c, const unsigned char* src, std::size_t n, unsigned char* dst,
-                                    std::size_t expected, std::string& why) {
+inline const char* decompress_block(Vtk_compressor c, const unsigned char* src, std::size_t n,
+                                    unsigned char* dst, std::size_t expected, std::string& why) {
   (void)src;
   (void)n;
   (void)dst;
@@ -122,10 +130,12 @@ inline const char* decompress_block(Vtk_compressor c, const unsigned char* src, 
       const int r = inflate(&z, Z_NO_FLUSH);
       if (r == Z_OK) continue;
       if (r == Z_STREAM_END) {
-        if (z.avail_out != 0 || out_left != 0) result = "the zlib stream decompresses to fewer bytes than announced";
+        if (z.avail_out != 0 || out_left != 0)
+          result = "the zlib stream decompresses to fewer bytes than announced";
       } else if (r == Z_BUF_ERROR) {
-        result = (z.avail_out == 0 && out_left == 0) ? "the zlib stream decompresses to more bytes than announced"
-                                                     : "truncated zlib stream";
+        result = (z.avail_out == 0 && out_left == 0)
+                     ? "the zlib stream decompresses to more bytes than announced"
+                     : "truncated zlib stream";
       } else if (r == Z_MEM_ERROR) {
         result = "zlib is out of memory";
       } else {
@@ -147,7 +157,8 @@ inline const char* decompress_block(Vtk_compressor c, const unsigned char* src, 
     const int r = LZ4_decompress_safe(reinterpret_cast<const char*>(src), reinterpret_cast<char*>(dst),
                                       static_cast<int>(n), static_cast<int>(expected));
     if (r < 0) return "corrupt or truncated LZ4 block (or larger than announced)";
-    if (static_cast<std::size_t>(r) != expected) return "the LZ4 block decompresses to fewer bytes than announced";
+    if (static_cast<std::size_t>(r) != expected)
+      return "the LZ4 block decompresses to fewer bytes than announced";
     return nullptr;
 #else
     return "LZ4 support was not built (liblz4 not found)";
@@ -157,7 +168,8 @@ inline const char* decompress_block(Vtk_compressor c, const unsigned char* src, 
 #ifdef CGAL_PR_STAR_OCTREE_HAS_LZMA
     std::uint64_t memlimit = std::uint64_t(1) << 30; // dictionary of at most 1 GB
     std::size_t in_pos = 0, out_pos = 0;
-    const lzma_ret r = lzma_stream_buffer_decode(&memlimit, 0, nullptr, src, &in_pos, n, dst, &out_pos, expected);
+    const lzma_ret r =
+        lzma_stream_buffer_decode(&memlimit, 0, nullptr, src, &in_pos, n, dst, &out_pos, expected);
     if (r == LZMA_OK) {
       if (out_pos != expected || in_pos != n) return "the xz stream does not have the announced size";
       return nullptr;

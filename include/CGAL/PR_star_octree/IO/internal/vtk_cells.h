@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -80,32 +81,56 @@ inline const char* vtk_cell_type_name(long long type) {
   }
 }
 
-/// Cell-data arrays with one of these names are read as tetrahedron labels.
+/// Cell-data arrays with one of these names (the first one in the file whose values are all
+/// integers) are read as tetrahedron labels: ours and meshio's `label`/`labels`, `subdomain`,
+/// VTK's `CellEntityIds`, meshio's `gmsh:physical` and `medit:ref`, deal.II's `MaterialIds`.
 inline bool is_vtk_label_array_name(const std::string& name) {
-  return name == "label" || name == "medit:ref";
+  return name == "label" || name == "labels" || name == "subdomain" || name == "CellEntityIds" ||
+         name == "gmsh:physical" || name == "medit:ref" || name == "MaterialIds";
 }
 
-/// Appends to `tetrahedra` the cells given by `starts` (cell `i` is `connectivity[starts[i] ..
-/// starts[i+1]-1]`, `starts.size()` is the number of cells + 1), checking that every cell is a
-/// VTK tetrahedron (type 10) with 4 vertex indices in `[0, nv)`; `vertex_offset` is added to the
-/// indices (pieces of a VTU file).  `fail(message)` must throw.
+/// Whether every value is an integer in the range of `int` (a label array).
+inline bool vtk_integer_valued(const std::vector<double>& values) {
+  for (double v : values)
+    if (!(v == std::floor(v) && v >= double(std::numeric_limits<int>::min()) &&
+          v <= double(std::numeric_limits<int>::max())))
+      return false;
+  return true;
+}
+
+/// Appends to `tetrahedra` the tetrahedra among the cells given by `starts` (cell `i` is
+/// `connectivity[starts[i] .. starts[i+1]-1]`, `starts.size()` is the number of cells + 1),
+/// checking that every tetrahedron (VTK type 10) has 4 distinct vertex indices in `[0, nv)`;
+/// `vertex_offset` is added to the indices (pieces of a VTU file).  The cells of other types are
+/// counted in `skipped` by type name; `kept` receives one flag per cell (1 for a tetrahedron) when
+/// some cell was skipped, and is left empty when every cell is a tetrahedron.  A non-empty list of
+/// cells without any tetrahedron is not a tetrahedral mesh: refused.  `fail(message)` must throw.
 template <class Tetrahedron, class Fail>
 void vtk_cells_to_tetrahedra(const std::vector<long long>& starts, const std::vector<long long>& connectivity,
                              const std::vector<long long>& types, std::size_t nv, std::size_t vertex_offset,
-                             std::vector<Tetrahedron>& tetrahedra, const Fail& fail) {
+                             std::vector<Tetrahedron>& tetrahedra, std::vector<char>& kept,
+                             std::map<std::string, std::size_t>& skipped, const Fail& fail) {
   using Index = typename Tetrahedron::value_type;
   const std::size_t nc = starts.empty() ? 0 : starts.size() - 1;
+  kept.clear();
   if (types.size() != nc)
     fail(std::to_string(types.size()) + " cell types for " + std::to_string(nc) + " cells");
   if (!starts.empty() && starts.front() != 0) fail("the first cell does not start at offset 0");
   if (!starts.empty() && static_cast<unsigned long long>(starts.back()) != connectivity.size())
     fail("the cell offsets end at " + std::to_string(starts.back()) + " but the connectivity has " +
          std::to_string(connectivity.size()) + " entries");
+  std::size_t first_other = nc;
   for (std::size_t i = 0; i < nc; ++i) {
-    if (types[i] != 10)
-      fail("cell " + std::to_string(i) + " has VTK type " + std::to_string(types[i]) + " (" +
-           vtk_cell_type_name(types[i]) + "): only tetrahedra (type 10) are supported");
     if (starts[i + 1] < starts[i]) fail("cell offsets decrease at cell " + std::to_string(i));
+    if (types[i] != 10) {
+      if (first_other == nc) {
+        first_other = i;
+        kept.assign(nc, 1);
+      }
+      kept[i] = 0;
+      ++skipped[vtk_cell_type_name(types[i])];
+      continue;
+    }
     if (starts[i + 1] - starts[i] != 4)
       fail("cell " + std::to_string(i) + " is a tetrahedron with " +
            std::to_string(starts[i + 1] - starts[i]) + " vertices instead of 4");
@@ -126,6 +151,24 @@ void vtk_cells_to_tetrahedra(const std::vector<long long>& starts, const std::ve
            " listed twice");
     tetrahedra.push_back(t);
   }
+  if (nc > 0 && first_other == 0 && kept.size() == nc) {
+    bool any = false;
+    for (char k : kept) any = any || k;
+    if (!any)
+      fail("no tetrahedron among the " + std::to_string(nc) + " cells: cell 0 has VTK type " +
+           std::to_string(types[0]) + " (" + vtk_cell_type_name(types[0]) +
+           "), only tetrahedra (type 10) are read");
+  }
+}
+
+/// Keeps the values of the cells flagged in `kept` (all of them when `kept` is empty).
+template <class T>
+void vtk_keep_cells(std::vector<T>& values, const std::vector<char>& kept) {
+  if (kept.empty()) return;
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < values.size() && i < kept.size(); ++i)
+    if (kept[i]) values[j++] = values[i];
+  values.resize(j);
 }
 
 /// Converts label values (read as doubles) to ints; `fail(message)` must throw.

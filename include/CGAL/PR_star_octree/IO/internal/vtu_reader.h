@@ -11,6 +11,7 @@
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/internal/base64.h>
+#include <CGAL/PR_star_octree/IO/internal/decompress.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 #include <CGAL/PR_star_octree/IO/internal/vtk_cells.h>
 #include <CGAL/PR_star_octree/IO/internal/xml.h>
@@ -23,6 +24,7 @@
 #include <fstream>
 #include <istream>
 #include <limits>
+#include <map>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -41,6 +43,59 @@ inline bool host_is_little_endian() {
   std::memcpy(&c, &one, 1);
   return c == 1;
 }
+
+/// A sequential source of bytes: raw bytes of the file (appended raw data) or base64 text.
+class Vtu_byte_source {
+public:
+  /// raw bytes `data[0..size)`, at byte `file_offset` of the file
+  Vtu_byte_source(const char* data, std::size_t size, std::size_t file_offset)
+      : raw_(reinterpret_cast<const unsigned char*>(data)), size_(size), base_(file_offset),
+        dec_(std::string_view()) {}
+  /// base64 text at byte `file_offset` of the file (when it is one piece of the file)
+  Vtu_byte_source(std::string_view base64, std::size_t file_offset) : base_(file_offset), dec_(base64) {}
+
+  bool is_raw() const { return raw_ != nullptr; }
+
+  /// Fills `dst[0..n)`; false when the data end first or are not valid base64 (see `error()`).
+  bool read(unsigned char* dst, std::size_t n) {
+    if (raw_ != nullptr) {
+      if (size_ - pos_ < n) return false;
+      std::memcpy(dst, raw_ + pos_, n);
+      pos_ += n;
+      return true;
+    }
+    return dec_.read(dst, n);
+  }
+
+  /// The next `n` bytes, in place for raw data, decoded into `storage` for base64; nullptr when
+  /// they are not there.
+  const unsigned char* take(std::size_t n, std::vector<unsigned char>& storage) {
+    if (raw_ != nullptr) {
+      if (size_ - pos_ < n) return nullptr;
+      const unsigned char* p = raw_ + pos_;
+      pos_ += n;
+      return p;
+    }
+    storage.resize(n);
+    return dec_.read(storage.data(), n) ? storage.data() : nullptr;
+  }
+
+  /// An upper bound of the number of bytes that can still be read.
+  std::size_t max_remaining() const { return raw_ != nullptr ? size_ - pos_ : dec_.max_remaining_bytes(); }
+
+  /// The byte offset in the file of the next byte (of its base64 text when encoded).
+  std::size_t file_offset() const { return raw_ != nullptr ? base_ + pos_ : base_; }
+
+  std::string error() const {
+    if (raw_ != nullptr) return "the data end too early";
+    return dec_.error() ? dec_.error() : "invalid base64 data";
+  }
+
+private:
+  const unsigned char* raw_ = nullptr;
+  std::size_t size_ = 0, pos_ = 0, base_ = 0;
+  Base64_decoder dec_;
+};
 
 /// Reads the data arrays of a parsed VTK XML file.
 class Vtu_array_reader {
@@ -67,7 +122,12 @@ public:
       else
         fail(root, "unsupported header_type '" + *ht + "' (UInt32 or UInt64)");
     }
-    if (const std::string* c = root.attribute("compressor")) compressor_ = *c;
+    if (const std::string* c = root.attribute("compressor")) {
+      compressor_name_ = *c;
+      if (!vtk_compressor_from_name(*c, compressor_))
+        fail(root, "unknown compressor '" + *c +
+                       "' (vtkZLibDataCompressor, vtkLZ4DataCompressor or vtkLZMADataCompressor)");
+    }
     if (doc.has_appended_data()) {
       const std::string* enc = doc.appended_element().attribute("encoding");
       if (enc == nullptr) fail(doc.appended_element(), "<AppendedData> without an encoding attribute");
@@ -105,14 +165,20 @@ public:
     if (fmt == "ascii") {
       read_ascii(e, count, out);
     } else if (fmt == "binary" || fmt == "appended") {
-      if (!compressor_.empty())
-        fail(e, describe(e) + ": compressed data (compressor=\"" + compressor_ +
-                    "\") is not supported; save the file uncompressed or in ascii");
+      if (!compressor_available(compressor_))
+        fail(e, describe(e) + ": compressed data (compressor=\"" + compressor_name_ + "\") cannot be read: " +
+                    compressor_library(compressor_) + " was not found when this program was built");
       if (fmt == "binary") {
-        std::string storage;
-        const std::string_view text = doc_.element_text(e, storage);
-        Base64_decoder dec(text);
-        read_binary(e, count, size, kind, *type, dec, nullptr, 0, out);
+        if (e.text_parts.size() > 1) {
+          std::string storage;
+          Vtu_byte_source src(doc_.element_text(e, storage), e.text_parts.front().first);
+          read_binary(e, count, size, kind, *type, src, out);
+        } else {
+          const std::size_t begin = e.text_parts.empty() ? 0 : e.text_parts[0].first;
+          const std::size_t end = e.text_parts.empty() ? 0 : e.text_parts[0].second;
+          Vtu_byte_source src(doc_.text().substr(begin, end - begin), begin);
+          read_binary(e, count, size, kind, *type, src, out);
+        }
       } else {
         const std::string* off = e.attribute("offset");
         if (off == nullptr) fail(e, describe(e) + ": appended data without an offset attribute");
@@ -126,18 +192,21 @@ public:
           fail(e, describe(e) + ": offset " + *off + " is beyond the end of the appended data (" +
                       std::to_string(data.size()) + " bytes)");
         const std::string_view block = data.substr(static_cast<std::size_t>(offset));
+        const std::size_t file_offset = static_cast<std::size_t>(block.data() - doc_.text().data());
         if (appended_base64_) {
-          Base64_decoder dec(block);
-          read_binary(e, count, size, kind, *type, dec, nullptr, 0, out);
+          Vtu_byte_source src(block, file_offset);
+          read_binary(e, count, size, kind, *type, src, out);
         } else {
-          Base64_decoder unused{std::string_view()};
-          read_binary(e, count, size, kind, *type, unused, block.data(), block.size(), out);
+          Vtu_byte_source src(block.data(), block.size(), file_offset);
+          read_binary(e, count, size, kind, *type, src, out);
         }
       }
     } else {
       fail(e, describe(e) + ": unknown format '" + fmt + "' (ascii, binary or appended)");
     }
   }
+
+  Vtk_compressor compressor() const { return compressor_; }
 
 private:
   static bool type_info(const std::string& t, std::size_t& size, Kind& kind) {
@@ -217,73 +286,182 @@ private:
     }
   }
 
-  // From a base64 decoder when `raw == nullptr`, else from raw bytes.
+  /// The decompressed bytes of a compressed array, block by block (each block decompressed once,
+  /// into a buffer of its announced size, which was bounded before).
+  struct Block_stream {
+    Vtk_compressor compressor;
+    Vtu_byte_source* src;
+    std::vector<std::uint64_t> compressed_sizes;
+    std::uint64_t block_size = 0, last_block_size = 0;
+    std::size_t next_block = 0;
+    std::vector<unsigned char> block, storage;
+    std::size_t block_pos = 0;
+    std::string error;
+
+    std::size_t uncompressed_size(std::size_t i) const {
+      return static_cast<std::size_t>(
+          i + 1 == compressed_sizes.size() && last_block_size != 0 ? last_block_size : block_size);
+    }
+    bool read(unsigned char* dst, std::size_t n) {
+      while (n > 0) {
+        if (block_pos == block.size()) {
+          if (next_block == compressed_sizes.size()) {
+            error = "the compressed blocks hold fewer bytes than announced";
+            return false;
+          }
+          const std::size_t i = next_block++;
+          const std::size_t at = src->file_offset();
+          const unsigned char* c = src->take(static_cast<std::size_t>(compressed_sizes[i]), storage);
+          if (c == nullptr) {
+            error = "compressed block " + std::to_string(i) + " of " +
+                    std::to_string(compressed_sizes.size()) + " (at byte " + std::to_string(at) +
+                    "): " + src->error();
+            return false;
+          }
+          block.resize(uncompressed_size(i));
+          block_pos = 0;
+          std::string why;
+          if (const char* m = decompress_block(compressor, c, static_cast<std::size_t>(compressed_sizes[i]),
+                                               block.data(), block.size(), why)) {
+            error = "compressed block " + std::to_string(i) + " of " +
+                    std::to_string(compressed_sizes.size()) + " (at byte " + std::to_string(at) + "): " + m +
+                    (why.empty() ? "" : " (" + why + ")");
+            return false;
+          }
+        }
+        const std::size_t k = std::min(n, block.size() - block_pos);
+        std::memcpy(dst, block.data() + block_pos, k);
+        dst += k;
+        n -= k;
+        block_pos += k;
+      }
+      return true;
+    }
+  };
+
+  template <class T>
+  void convert(const unsigned char* buf, std::size_t chunk, std::size_t size, Kind kind, std::size_t done,
+               const Xml_element& e, std::vector<T>& out) const {
+    for (std::size_t i = 0; i < chunk; ++i) {
+      const std::uint64_t bits = load(buf + i * size, size);
+      const std::size_t index = done + i;
+      if constexpr (std::is_integral<T>::value) {
+        if (kind == UNSIGNED) {
+          if (bits > static_cast<std::uint64_t>(std::numeric_limits<long long>::max()))
+            fail(e, describe(e) + ": value " + std::to_string(index) + " is too large");
+          out.push_back(static_cast<long long>(bits));
+        } else {
+          out.push_back(sign_extend(bits, size));
+        }
+      } else {
+        double v;
+        if (kind == FLOAT) {
+          if (size == 4) {
+            const std::uint32_t b32 = static_cast<std::uint32_t>(bits);
+            float f;
+            std::memcpy(&f, &b32, 4);
+            v = f;
+          } else {
+            std::memcpy(&v, &bits, 8);
+          }
+          if (!std::isfinite(v)) fail(e, describe(e) + ": value " + std::to_string(index) + " is not finite");
+        } else if (kind == UNSIGNED) {
+          v = static_cast<double>(bits);
+        } else {
+          v = static_cast<double>(sign_extend(bits, size));
+        }
+        out.push_back(v);
+      }
+    }
+  }
+
+  std::string at(const Vtu_byte_source& src) const {
+    return " (at byte " + std::to_string(src.file_offset()) + " of the file)";
+  }
+
   template <class T>
   void read_binary(const Xml_element& e, std::size_t count, std::size_t size, Kind kind,
-                   const std::string& type, Base64_decoder& dec, const char* raw, std::size_t raw_size,
-                   std::vector<T>& out) const {
-    std::size_t pos = 0;
-    const auto get = [&](unsigned char* dst, std::size_t n, const char* what) {
-      if (raw != nullptr) {
-        if (raw_size - pos < n)
-          fail(e, describe(e) + ": the appended data ends before the " + std::string(what) + " (" +
-                      std::to_string(n) + " bytes needed, " + std::to_string(raw_size - pos) + " left)");
-        std::memcpy(dst, raw + pos, n);
-        pos += n;
-      } else if (!dec.read(dst, n)) {
-        fail(e, describe(e) + ": cannot decode the " + std::string(what) + ": " + dec.error());
+                   const std::string& type, Vtu_byte_source& src, std::vector<T>& out) const {
+    const auto word = [&](const char* what) {
+      unsigned char h[8];
+      const std::string where = at(src);
+      if (!src.read(h, header_size_))
+        fail(e, describe(e) + ": cannot read the " + std::string(what) + where + ": " + src.error());
+      return load(h, header_size_);
+    };
+    if (count > std::numeric_limits<std::size_t>::max() / 8)
+      fail(e, describe(e) + ": too many values (" + std::to_string(count) + ")");
+    const std::uint64_t expected = static_cast<std::uint64_t>(count) * size;
+    const auto wrong_size = [&](std::uint64_t nbytes, const char* what) {
+      fail(e, describe(e) + ": " + what + " " + std::to_string(nbytes) + " bytes, expected " +
+                  std::to_string(count) + " values of type " + type + " (" + std::to_string(expected) +
+                  " bytes)");
+    };
+    Block_stream blocks{compressor_, &src, {}, 0, 0, 0, {}, {}, 0, {}};
+    if (compressor_ == Vtk_compressor::NONE) {
+      const std::uint64_t nbytes = word("header");
+      if (nbytes != expected) wrong_size(nbytes, "the binary block holds");
+      const std::size_t available = src.max_remaining();
+      if (nbytes > available)
+        fail(e, describe(e) + ": the binary data is truncated (" + std::to_string(nbytes) +
+                    " bytes announced, at most " + std::to_string(available) + " present)" + at(src));
+    } else {
+      // header: number of blocks, uncompressed block size, size of the last partial block (0: full),
+      // then the compressed size of each block
+      const std::string header_at = at(src);
+      const std::uint64_t nb = word("compression header (number of blocks)");
+      const std::uint64_t bs = word("compression header (block size)");
+      const std::uint64_t lbs = word("compression header (last block size)");
+      const std::string where = describe(e) + ": compressed data" + header_at + ": ";
+      if (nb > src.max_remaining() / header_size_)
+        fail(e,
+             where + std::to_string(nb) + " blocks announced, the file cannot hold their sizes (truncated?)");
+      if (nb > 0 && bs == 0) fail(e, where + "the block size is 0 for " + std::to_string(nb) + " blocks");
+      if (lbs > bs)
+        fail(e, where + "the last block size " + std::to_string(lbs) + " exceeds the block size " +
+                    std::to_string(bs));
+      std::uint64_t total = 0;
+      if (nb > 0) {
+        if (bs > std::numeric_limits<std::uint64_t>::max() / nb)
+          wrong_size(std::numeric_limits<std::uint64_t>::max(), "the compressed blocks announce more than");
+        total = (nb - 1) * bs + (lbs != 0 ? lbs : bs);
+      }
+      if (total != expected) wrong_size(total, "the compressed blocks announce");
+      blocks.block_size = bs;
+      blocks.last_block_size = lbs;
+      blocks.compressed_sizes.resize(static_cast<std::size_t>(nb));
+      std::uint64_t sum = 0;
+      for (std::size_t i = 0; i < nb; ++i) {
+        const std::uint64_t c = word("compressed block sizes");
+        blocks.compressed_sizes[i] = c;
+        sum += std::min<std::uint64_t>(c, std::uint64_t(1) << 62);
+        const std::uint64_t u = blocks.uncompressed_size(i);
+        const std::uint64_t ratio = max_compression_ratio(compressor_);
+        if (c == 0 && u > 0) fail(e, where + "block " + std::to_string(i) + " has a compressed size of 0");
+        if (c < (std::uint64_t(1) << 40) && u > c * ratio + 64)
+          fail(e, where + "block " + std::to_string(i) + " announces " + std::to_string(u) + " bytes from " +
+                      std::to_string(c) + " compressed bytes, more than a ratio of " + std::to_string(ratio) +
+                      ": refused (corrupt header or decompression bomb)");
+      }
+      if (sum > src.max_remaining())
+        fail(e, where + "the compressed blocks are truncated (" + std::to_string(sum) +
+                    " bytes announced, at most " + std::to_string(src.max_remaining()) + " present)");
+    }
+    const auto get = [&](unsigned char* dst, std::size_t n) {
+      if (compressor_ == Vtk_compressor::NONE) {
+        const std::string where = at(src);
+        if (!src.read(dst, n)) fail(e, describe(e) + ": cannot read the data" + where + ": " + src.error());
+      } else if (!blocks.read(dst, n)) {
+        fail(e, describe(e) + ": " + blocks.error);
       }
     };
-    unsigned char h[8];
-    get(h, header_size_, "header");
-    const std::uint64_t nbytes = load(h, header_size_);
-    if (count > std::numeric_limits<std::size_t>::max() / 8 ||
-        nbytes != static_cast<std::uint64_t>(count) * size)
-      fail(e, describe(e) + ": the binary block holds " + std::to_string(nbytes) + " bytes, expected " +
-                  std::to_string(count) + " values of type " + type + " (" + std::to_string(count * size) +
-                  " bytes)");
-    const std::size_t available = raw != nullptr ? raw_size - pos : dec.max_remaining_bytes();
-    if (nbytes > available)
-      fail(e, describe(e) + ": the binary data is truncated (" + std::to_string(nbytes) +
-                  " bytes announced, at most " + std::to_string(available) + " present)");
     out.reserve(count);
-    unsigned char buf[4096];
+    unsigned char buf[1 << 16];
     std::size_t done = 0;
     while (done < count) {
       const std::size_t chunk = std::min<std::size_t>(count - done, sizeof(buf) / size);
-      get(buf, chunk * size, "data");
-      for (std::size_t i = 0; i < chunk; ++i) {
-        const std::uint64_t bits = load(buf + i * size, size);
-        const std::size_t index = done + i;
-        if constexpr (std::is_integral<T>::value) {
-          if (kind == UNSIGNED) {
-            if (bits > static_cast<std::uint64_t>(std::numeric_limits<long long>::max()))
-              fail(e, describe(e) + ": value " + std::to_string(index) + " is too large");
-            out.push_back(static_cast<long long>(bits));
-          } else {
-            out.push_back(sign_extend(bits, size));
-          }
-        } else {
-          double v;
-          if (kind == FLOAT) {
-            if (size == 4) {
-              const std::uint32_t b32 = static_cast<std::uint32_t>(bits);
-              float f;
-              std::memcpy(&f, &b32, 4);
-              v = f;
-            } else {
-              std::memcpy(&v, &bits, 8);
-            }
-            if (!std::isfinite(v))
-              fail(e, describe(e) + ": value " + std::to_string(index) + " is not finite");
-          } else if (kind == UNSIGNED) {
-            v = static_cast<double>(bits);
-          } else {
-            v = static_cast<double>(sign_extend(bits, size));
-          }
-          out.push_back(v);
-        }
-      }
+      get(buf, chunk * size);
+      convert(buf, chunk, size, kind, done, e, out);
       done += chunk;
     }
   }
@@ -301,7 +479,8 @@ private:
   const std::string& name_;
   bool swap_ = false;
   std::size_t header_size_ = 4;
-  std::string compressor_;
+  std::string compressor_name_;
+  Vtk_compressor compressor_ = Vtk_compressor::NONE;
   bool appended_base64_ = false;
 };
 
@@ -349,6 +528,7 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
     const std::size_t nv = count_attribute("NumberOfPoints");
     const std::size_t nc = count_attribute("NumberOfCells");
     const std::size_t vertex_offset = mesh.points.size();
+    std::vector<char> kept; // which cells are tetrahedra (empty: all)
     if (static_cast<unsigned long long>(vertex_offset) + nv > max_vertices<Index>())
       fail(piece, "the points do not fit in the index type of the mesh");
     const auto single = [&](const Xml_element& parent, std::string_view child) -> const Xml_element* {
@@ -405,21 +585,17 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
       arrays.read(*offs, nc, offsets);
       // the connectivity size is the last offset (checked to be sensible against the text size)
       const long long last = nc == 0 ? 0 : offsets.back();
-      if (last < 0 || static_cast<unsigned long long>(last) > text.size())
+      if (last < 0 ||
+          static_cast<unsigned long long>(last) / max_compression_ratio(arrays.compressor()) > text.size())
         fail(*offs, "invalid last cell offset " + std::to_string(last));
-      // cell types first: a non-tetrahedral mesh is reported as such
-      for (std::size_t i = 0; i < nc; ++i)
-        if (type_values[i] != 10)
-          fail(*types, "cell " + std::to_string(i) + " has VTK type " + std::to_string(type_values[i]) +
-                           " (" + vtk_cell_type_name(type_values[i]) +
-                           "): only tetrahedra (type 10) are supported");
       arrays.read(*conn, static_cast<std::size_t>(last), connectivity);
       std::vector<long long> starts;
       starts.reserve(nc + 1);
       starts.push_back(0);
       starts.insert(starts.end(), offsets.begin(), offsets.end());
       mesh.tetrahedra.reserve(mesh.tetrahedra.size() + nc);
-      vtk_cells_to_tetrahedra(starts, connectivity, type_values, nv, vertex_offset, mesh.tetrahedra,
+      vtk_cells_to_tetrahedra(starts, connectivity, type_values, nv, vertex_offset, mesh.tetrahedra, kept,
+                              mesh.skipped_cells,
                               [&](const std::string& m) { fail(*cells, "<Cells>: " + m); });
     }
 
@@ -447,19 +623,36 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
     if (pi > 0 && k != mesh.point_data.size())
       fail(piece, "the point data of piece " + std::to_string(pi) + " differ from those of the first piece");
 
-    // labels
+    // labels (the first integer-valued array with a label name) and cell data
     bool has_labels = false;
+    std::size_t kc = 0;
     if (const Xml_element* cd = single(piece, "CellData")) {
       for (const Xml_element* a : xml_children(doc, *cd, "DataArray")) {
+        if (components(*a) != 1) continue;
         const std::string* n = a->attribute("Name");
-        if (n == nullptr || !is_vtk_label_array_name(*n) || components(*a) != 1) continue;
+        const std::string array_name = n ? *n : "cell_data_" + std::to_string(kc);
         std::vector<double> values;
         arrays.read(*a, nc, values);
-        vtk_labels_to_int(values, mesh.tetrahedron_labels, [&](const std::string& m) { fail(*a, m); });
-        has_labels = true;
-        break;
+        vtk_keep_cells(values, kept);
+        if (!has_labels && is_vtk_label_array_name(array_name) && vtk_integer_valued(values)) {
+          vtk_labels_to_int(values, mesh.tetrahedron_labels, [&](const std::string& m) { fail(*a, m); });
+          has_labels = true;
+          continue;
+        }
+        if (pi == 0) {
+          for (const auto& existing : mesh.cell_data)
+            if (existing.name == array_name) fail(*a, "duplicate cell data array '" + array_name + "'");
+          mesh.cell_data.push_back(Point_data_array{array_name, {}});
+        } else if (kc >= mesh.cell_data.size() || mesh.cell_data[kc].name != array_name) {
+          fail(*a, "the cell data of piece " + std::to_string(pi) + " differ from those of the first piece");
+        }
+        auto& dst = mesh.cell_data[kc].values;
+        dst.insert(dst.end(), values.begin(), values.end());
+        ++kc;
       }
     }
+    if (pi > 0 && kc != mesh.cell_data.size())
+      fail(piece, "the cell data of piece " + std::to_string(pi) + " differ from those of the first piece");
     if (!has_labels) labels_everywhere = false;
   }
   if (!labels_everywhere) mesh.tetrahedron_labels.clear();

@@ -8,7 +8,9 @@
 
 // The VTK XML UnstructuredGrid (.vtu) writer: escaping and data arrays.
 
+#include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/internal/base64.h>
+#include <CGAL/PR_star_octree/IO/internal/decompress.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 
 #include <cstddef>
@@ -16,6 +18,8 @@
 #include <cstring>
 #include <ostream>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -100,6 +104,153 @@ void vtu_write_array(std::ostream& out, std::string& buf, const std::string& fil
   buf += "        </DataArray>\n";
   flush_buffer(out, buf, file);
 }
+
+/// How `write_vtu()` stores the data arrays.
+enum class Vtu_encoding {
+  ASCII,         ///< text, shortest exact decimal form
+  INLINE_BASE64, ///< `format="binary"`, uncompressed, UInt64 header
+  APPENDED       ///< `format="appended"`, raw `<AppendedData>`, zlib-compressed when zlib was found
+};
+
+/// The appended form (as ParaView writes): `header_type="UInt64"`, each array in blocks of
+/// 32 KiB compressed by zlib (`vtkZLibDataCompressor`) when the build has zlib, raw otherwise.
+class Vtu_appended_arrays {
+public:
+  static constexpr std::size_t block_size = 32768;
+
+  explicit Vtu_appended_arrays(int level) : level_(level) {}
+
+  static bool compressed() {
+#ifdef CGAL_PR_STAR_OCTREE_HAS_ZLIB
+    return true;
+#else
+    return false;
+#endif
+  }
+
+  /// Adds one array (`get(i)` is value `i`, of `count`, as `T`); returns its offset.
+  template <class T, class Get>
+  std::size_t add(std::size_t count, const Get& get, const std::string& file) {
+    (void)file; // for the error message of a failed compression
+    const std::size_t offset = data_.size();
+    const std::uint64_t nbytes = static_cast<std::uint64_t>(count) * sizeof(T);
+    const bool swap = !host_is_little_endian();
+    std::string raw;
+    raw.reserve(compressed() ? block_size : static_cast<std::size_t>(nbytes));
+    const auto put_word = [&](std::string& dst, std::uint64_t w) {
+      unsigned char b[8];
+      for (int i = 0; i < 8; ++i) b[i] = static_cast<unsigned char>(w >> (8 * i)); // little-endian
+      dst.append(reinterpret_cast<const char*>(b), 8);
+    };
+    if (!compressed()) {
+      put_word(data_, nbytes);
+      for (std::size_t i = 0; i < count; ++i) append_value(data_, get(i), swap);
+      return offset;
+    }
+#ifdef CGAL_PR_STAR_OCTREE_HAS_ZLIB
+    const std::size_t nb = static_cast<std::size_t>((nbytes + block_size - 1) / block_size);
+    std::string blocks;
+    std::vector<std::uint64_t> sizes;
+    sizes.reserve(nb);
+    std::size_t i = 0;
+    const std::size_t per_block = block_size / sizeof(T);
+    static_assert(block_size % 8 == 0, "whole values per block");
+    while (i < count) {
+      raw.clear();
+      const std::size_t end = std::min(count, i + per_block);
+      for (; i < end; ++i) append_value(raw, get(i), swap);
+      const std::size_t before = blocks.size();
+      if (!zlib_compress_append(reinterpret_cast<const unsigned char*>(raw.data()), raw.size(), level_,
+                                blocks))
+        throw Write_error(file, "zlib compression failed");
+      sizes.push_back(blocks.size() - before);
+    }
+    put_word(data_, sizes.size());
+    put_word(data_, block_size);
+    put_word(data_, nbytes % block_size);
+    for (std::uint64_t c : sizes) put_word(data_, c);
+    data_ += blocks;
+#endif
+    return offset;
+  }
+
+  const std::string& data() const {
+    return data_;
+  }
+
+private:
+  template <class T>
+  static void append_value(std::string& dst, T v, bool swap) {
+    unsigned char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    if (swap)
+      for (std::size_t k = 0; k < sizeof(T) / 2; ++k) std::swap(b[k], b[sizeof(T) - 1 - k]);
+    dst.append(reinterpret_cast<const char*>(b), sizeof(T));
+  }
+
+  int level_;
+  std::string data_;
+};
+
+/// Writes the DataArray elements in one of the encodings (the appended data at the end).
+class Vtu_array_writer {
+public:
+  Vtu_array_writer(std::ostream& out, std::string& buf, const std::string& file, Vtu_encoding encoding,
+                   int level = 1)
+      : out_(out), buf_(buf), file_(file), encoding_(encoding), appended_(level) {}
+
+  template <class T, class Get>
+  void write(const char* vtk_type, const std::string& array_name, std::size_t components, std::size_t count,
+             const Get& get) {
+    if (encoding_ != Vtu_encoding::APPENDED) {
+      vtu_write_array<T>(out_, buf_, file_, vtk_type, array_name, components, count,
+                         encoding_ == Vtu_encoding::INLINE_BASE64, get);
+      return;
+    }
+    const std::size_t offset = appended_.add<T>(count, get, file_);
+    buf_ += "        <DataArray type=\"";
+    buf_ += vtk_type;
+    buf_ += '"';
+    if (!array_name.empty()) {
+      buf_ += " Name=\"";
+      vtu_escape(buf_, array_name);
+      buf_ += '"';
+    }
+    if (components != 1) {
+      buf_ += " NumberOfComponents=\"";
+      append_integer(buf_, components);
+      buf_ += '"';
+    }
+    buf_ += " format=\"appended\" offset=\"";
+    append_integer(buf_, offset);
+    buf_ += "\"/>\n";
+  }
+
+  /// the `compressor` attribute of `<VTKFile>` (with its leading space), possibly empty
+  const char* compressor_attribute() const {
+    return encoding_ == Vtu_encoding::APPENDED && Vtu_appended_arrays::compressed()
+               ? " compressor=\"vtkZLibDataCompressor\""
+               : "";
+  }
+
+  /// Writes what follows `</UnstructuredGrid>`: the appended data, if any.
+  void finish() {
+    if (encoding_ != Vtu_encoding::APPENDED) return;
+    buf_ += "  <AppendedData encoding=\"raw\">\n   _";
+    flush_buffer(out_, buf_, file_, true);
+    const std::string& d = appended_.data();
+    out_.write(d.data(), static_cast<std::streamsize>(d.size()));
+    if (!out_) throw Write_error(file_, "error while writing");
+    buf_ += "\n  </AppendedData>\n";
+  }
+
+private:
+  std::ostream& out_;
+  std::string& buf_;
+  const std::string& file_;
+  Vtu_encoding encoding_;
+  Vtu_appended_arrays appended_;
+};
 
 } // namespace internal
 } // namespace IO
