@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 namespace prstar {
 
@@ -100,9 +101,19 @@ void Progress_bar::draw(bool final_line) {
   const std::size_t width = terminal_width() - 1; // never the last column: no wrapping
   std::string line;
   if (final_line) {
+    // A phase with a known total ends as a full bar, the others as "... done".
     char buf[64];
-    std::snprintf(buf, sizeof buf, " ... done (%.2f s)", t);
-    line = name_ + buf;
+    if (total_.load(std::memory_order_relaxed) == 0) {
+      std::snprintf(buf, sizeof buf, " ... done (%.2f s)", t);
+      line = fit(name_, width > std::strlen(buf) ? width - std::strlen(buf) : 0) + buf;
+    } else {
+      std::snprintf(buf, sizeof buf, "] 100%%  done (%.2f s)", t);
+      const std::size_t fixed_part = 3 + std::strlen(buf);
+      std::size_t bar = width > fixed_part + name_.size() ? width - fixed_part - name_.size() : 0;
+      bar = std::max<std::size_t>(10, std::min<std::size_t>(20, bar));
+      const std::size_t room = width > fixed_part + bar ? width - fixed_part - bar : 0;
+      line = fit(name_, room) + "  [" + std::string(bar, '#') + buf;
+    }
   } else {
     const std::size_t total = total_.load(std::memory_order_relaxed);
     const std::size_t done = std::min(done_.load(std::memory_order_relaxed), total);

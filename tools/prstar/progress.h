@@ -23,7 +23,8 @@ namespace prstar {
 ///     reading torus.mesh (12.1 MiB)  |  0:02 elapsed                        (no fraction known)
 ///     classifying the vertices  [#######.......]  45%  0:03 elapsed, 0:04 left
 ///
-/// and ended by `name ... done (3.51 s)` and a newline.  `update()` (and the function returned by
+/// and ended by a newline after `name ... done (3.51 s)` (no fraction known) or
+/// `name  [####################] 100%  done (3.51 s)`.  `update()` (and the function returned by
 /// `callback()`, meant for `CGAL::PR_star_octree::parameters::progress()`) only stores two atomic
 /// counters, so it may be called after every leaf and from any thread.  Nothing is drawn, and no
 /// thread is started, when the bar is disabled: `wanted` false (--quiet, --json) or stderr not a
