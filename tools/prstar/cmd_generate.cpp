@@ -79,7 +79,7 @@ Command generate_command() {
       .option("--facet-size", "S", "target surface triangle size (default: the cell size)")
       .option("--facet-distance", "D", "surface approximation error (default: cell size / 10)")
       .flag("--tetgen", "mesh the same surface with TetGen (quality, max volume from the cell size)")
-      .output("OUT", "", "write the mesh to OUT (.mesh, .vtu, .off/.ts)", true)
+      .output("OUT", "", "write the mesh to OUT", true)
       .json_keys("keys: output, mesher (mesh_3 or tetgen), vertices, tetrahedra, seconds")
       .quiet_silences_summary()
       .check([](const Options& o) { generate_options(o); })

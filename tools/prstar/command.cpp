@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -62,12 +63,27 @@ void help_line(std::ostringstream& s, const std::string& label, const std::strin
   s << '\n';
 }
 
-// The temporary being written, removed by a fatal signal.
-char pending_temporary[4096];
-volatile std::sig_atomic_t has_pending_temporary = 0;
+// The files a mesh file name stands for: itself, or for TetGen both NAME.node and NAME.ele (the
+// companion's extension in the case of the first letter of the given one, as the library's
+// reader and writer do).
+std::vector<std::string> mesh_files(const std::string& name) {
+  const std::size_t dot = name.find_last_of('.'), slash = name.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {name};
+  std::string ext = name.substr(dot + 1);
+  const bool upper = !ext.empty() && std::isupper(static_cast<unsigned char>(ext[0]));
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string base = name.substr(0, dot + 1);
+  if (ext == "node") return {name, base + (upper ? "ELE" : "ele")};
+  if (ext == "ele") return {base + (upper ? "NODE" : "node"), name};
+  return {name};
+}
+
+// The temporaries being written (at most two: TetGen's pair), removed by a fatal signal.
+char pending_temporary[2][4096];
+volatile std::sig_atomic_t pending_temporaries = 0;
 
 extern "C" void remove_temporary_and_reraise(int sig) {
-  if (has_pending_temporary) ::unlink(pending_temporary);
+  for (int i = 0; i < pending_temporaries && i < 2; ++i) ::unlink(pending_temporary[i]);
   ::signal(sig, SIG_DFL);
   ::raise(sig);
 }
@@ -176,12 +192,14 @@ std::string Command::help() const {
   for (const Declared& d : specific_)
     lines.push_back({d.name + (d.value_name.empty() ? "" : " " + d.value_name), d.help});
   if (has_kv_)
-    lines.push_back(
-        {kv_list_ ? "--kv N|inf[,N...]" : "--kv N|inf",
-         help_kv + std::string(";\ndefault ") + kv_default_ + (kv_list_ ? help_kv_list : "")});
+    lines.push_back({kv_list_ ? "--kv N|inf[,N...]" : "--kv N|inf",
+                     help_kv + std::string(";\ndefault ") + kv_default_ + (kv_list_ ? help_kv_list : "")});
   if (has_max_depth_) lines.push_back({"--max-depth D", help_max_depth});
   for (const Output_decl& o : outputs_)
-    lines.push_back({(o.option.empty() ? "-o, --output" : o.option) + " " + o.value_name, o.help});
+    lines.push_back({(o.option.empty() ? "-o, --output" : o.option) + " " + o.value_name,
+                     o.help + (o.extension.empty()
+                                   ? std::string(" (") + CGAL::PR_star_octree::IO::writable_extensions() + ")"
+                                   : std::string())});
   if (!outputs_.empty()) lines.push_back({"--force", help_force});
   lines.push_back({"--json", help_json + (json_keys_.empty() ? "" : "\n" + json_keys_)});
   lines.push_back({"--quiet", quiet_summary_ ? help_quiet_summary : help_quiet});
@@ -264,7 +282,9 @@ Options Command::parse(int argc, char** argv, int first) const {
     } else if (!ends_with(value, d.extension))
       throw Usage_error(value + ": the output must be a " + d.extension + " file");
     for (const std::string& in : inputs)
-      if (same_file(value, in)) throw Usage_error("the output " + value + " would overwrite the input");
+      for (const std::string& a : mesh_files(in))
+        for (const std::string& b : mesh_files(value))
+          if (same_file(a, b)) throw Usage_error("the output " + value + " would overwrite the input");
     for (const auto& earlier : o.outputs_)
       if (same_file(value, earlier.second))
         throw Usage_error((earlier.first.empty() ? "-o" : earlier.first) + " and " + label +
@@ -274,9 +294,10 @@ Options Command::parse(int argc, char** argv, int first) const {
 
   if (check_) check_(o);
 
-  for (const auto& out : o.outputs_)
-    if (file_exists(out.second) && !o.force_)
-      throw std::runtime_error(out.second + ": the file exists (use --force to overwrite it)");
+  if (!o.force_)
+    for (const auto& out : o.outputs_)
+      for (const std::string& f : mesh_files(out.second))
+        if (file_exists(f)) throw std::runtime_error(f + ": the file exists (use --force to overwrite it)");
   return o;
 }
 
@@ -284,6 +305,11 @@ std::string Options::output(const std::string& option) const {
   for (const auto& o : outputs_)
     if (o.first == option) return o.second;
   return "";
+}
+
+std::string mesh_formats() {
+  return std::string("Mesh files read: ") + CGAL::PR_star_octree::IO::readable_extensions() +
+         "\nMesh files written: " + CGAL::PR_star_octree::IO::writable_extensions() + "\n";
 }
 
 std::vector<std::size_t> parse_bucket_list(const std::string& s) {
@@ -319,30 +345,38 @@ void write_through_temporary(const std::string& out, const std::function<void(co
   const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
   const std::string mark = ".prstar-tmp-" + std::to_string(::getpid());
   const std::string tmp = has_ext ? out.substr(0, dot) + mark + out.substr(dot) : out + mark;
+  // What the writer makes: OUT, or for TetGen OUT.node and OUT.ele (and their temporaries).
+  const std::vector<std::string> tmps = mesh_files(tmp), outs = mesh_files(out);
   install_signal_cleanup();
-  if (tmp.size() < sizeof pending_temporary) {
-    std::memcpy(pending_temporary, tmp.c_str(), tmp.size() + 1);
-    has_pending_temporary = 1;
+  pending_temporaries = 0;
+  for (std::size_t i = 0; i < tmps.size() && i < 2; ++i) {
+    if (tmps[i].size() >= sizeof pending_temporary[i]) break;
+    std::memcpy(pending_temporary[i], tmps[i].c_str(), tmps[i].size() + 1);
+    pending_temporaries = static_cast<std::sig_atomic_t>(i + 1);
   }
+  auto clean = [&] {
+    pending_temporaries = 0;
+    for (const std::string& t : tmps) std::remove(t.c_str());
+  };
   try {
     write(tmp);
-    if (std::rename(tmp.c_str(), out.c_str()) != 0)
-      throw std::runtime_error(out + ": cannot write the output file");
+    for (std::size_t i = 0; i < tmps.size(); ++i)
+      if (std::rename(tmps[i].c_str(), outs[i].c_str()) != 0)
+        throw std::runtime_error(outs[i] + ": cannot write the output file");
   } catch (const std::bad_alloc&) {
-    has_pending_temporary = 0;
-    std::remove(tmp.c_str());
+    clean();
     throw;
   } catch (const std::exception& e) {
-    has_pending_temporary = 0;
-    std::remove(tmp.c_str());
+    clean();
     // The user knows the output by its name, not by the temporary's.
-    throw std::runtime_error(replace_all(e.what(), tmp, out));
+    std::string message = e.what();
+    for (std::size_t i = 0; i < tmps.size(); ++i) message = replace_all(message, tmps[i], outs[i]);
+    throw std::runtime_error(message);
   } catch (...) {
-    has_pending_temporary = 0;
-    std::remove(tmp.c_str());
+    clean();
     throw;
   }
-  has_pending_temporary = 0;
+  pending_temporaries = 0;
 }
 
 void write_mesh_file(const std::string& out, const Mesh& mesh) {

@@ -151,6 +151,8 @@ private:
   bool force_ = false, json_ = false, quiet_ = false, quiet_silences_summary_ = false;
 };
 
+/// The mesh formats read and written, for the help texts.
+std::string mesh_formats();
 /// Parses "N|inf[,N|inf...]".
 std::vector<std::size_t> parse_bucket_list(const std::string& s);
 /// k_v as a JSON value: a number, or the string "inf".
@@ -163,7 +165,8 @@ Mesh read_mesh(const std::string& file, Progress_bar& progress);
 /// (or an interruption by SIGINT, SIGTERM, SIGHUP) never leaves a half-written `out` or the
 /// temporary behind, and an existing `out` stays untouched until the new one is complete.
 /// `write(tmp)` writes the temporary, whose name keeps the extension of `out` (it selects the
-/// format): OUT.mesh -> OUT.prstar-tmp-PID.mesh.
+/// format): OUT.mesh -> OUT.prstar-tmp-PID.mesh.  A TetGen name OUT.node or OUT.ele stands for
+/// both files, written and renamed together (and both checked by `Command::parse()`).
 void write_through_temporary(const std::string& out, const std::function<void(const std::string&)>& write);
 /// `write_through_temporary` with the library's writer chosen by the extension of `out`.
 void write_mesh_file(const std::string& out, const Mesh& mesh);
