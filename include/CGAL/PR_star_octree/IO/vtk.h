@@ -567,12 +567,29 @@ void write_vtk_stream(std::ostream& out, const Mesh& mesh,
     flush_buffer(out, buf, name);
   }
   if (binary) buf += '\n';
-  const auto scalars = [&](const std::string& array_name, const char* type, std::size_t n, const auto& get) {
-    buf += "SCALARS ";
-    buf += vtk_encode_name(array_name);
-    buf += ' ';
-    buf += type;
-    buf += " 1\nLOOKUP_TABLE default\n";
+  // the first array of a section as SCALARS (the active one), the others in one FIELD: VTK's
+  // reader reads only the first SCALARS of a section by default, but every FIELD array
+  const auto array = [&](bool first, std::size_t count, const std::string& array_name, const char* type,
+                         std::size_t n, const auto& get) {
+    if (first) {
+      buf += "SCALARS ";
+      buf += vtk_encode_name(array_name);
+      buf += ' ';
+      buf += type;
+      buf += " 1\nLOOKUP_TABLE default\n";
+    } else {
+      if (count > 0) {
+        buf += "FIELD FieldData ";
+        append_integer(buf, count);
+        buf += '\n';
+      }
+      buf += vtk_encode_name(array_name);
+      buf += " 1 ";
+      append_integer(buf, n);
+      buf += ' ';
+      buf += type;
+      buf += '\n';
+    }
     for (std::size_t i = 0; i < n; ++i) {
       get(i);
       flush_buffer(out, buf, name);
@@ -583,17 +600,24 @@ void write_vtk_stream(std::ostream& out, const Mesh& mesh,
     buf += "POINT_DATA ";
     append_integer(buf, nv);
     buf += '\n';
-    for (const Point_data_array* a : data)
-      scalars(a->name, "double", nv, [&](std::size_t i) { put_double(a->values[i], '\n'); });
+    for (std::size_t k = 0; k < data.size(); ++k)
+      array(k == 0, k == 1 ? data.size() - 1 : 0, data[k]->name, "double", nv,
+            [&](std::size_t i) { put_double(data[k]->values[i], '\n'); });
   }
   if (!mesh.tetrahedron_labels.empty() || !mesh.cell_data.empty()) {
     buf += "CELL_DATA ";
     append_integer(buf, nt);
     buf += '\n';
-    if (!mesh.tetrahedron_labels.empty())
-      scalars("label", "int", nt, [&](std::size_t i) { put_int(mesh.tetrahedron_labels[i], '\n'); });
-    for (const Point_data_array& a : mesh.cell_data)
-      scalars(a.name, "double", nt, [&](std::size_t i) { put_double(a.values[i], '\n'); });
+    const bool labels = !mesh.tetrahedron_labels.empty();
+    if (labels)
+      array(true, 0, "label", "int", nt, [&](std::size_t i) { put_int(mesh.tetrahedron_labels[i], '\n'); });
+    const std::size_t nf = mesh.cell_data.size() - (labels ? 0 : 1);
+    for (std::size_t k = 0; k < mesh.cell_data.size(); ++k) {
+      const bool first = !labels && k == 0;
+      const bool first_field = labels ? k == 0 : k == 1;
+      array(first, first_field ? nf : 0, mesh.cell_data[k].name, "double", nt,
+            [&](std::size_t i) { put_double(mesh.cell_data[k].values[i], '\n'); });
+    }
   }
   flush_buffer(out, buf, name, true);
 }
