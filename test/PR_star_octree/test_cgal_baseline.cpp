@@ -155,7 +155,7 @@ bool is_ordered_star(const Mesh& m, Index a, Index b, const std::vector<Index>& 
 // Every relation of `b` against brute force on `m`.
 void check_against_reference(const Mesh& m, const Baseline& b) {
   const Reference ref(m);
-  CHECK(b.number_of_finite_cells() == m.tets.size());
+  CHECK_EQUAL(b.number_of_finite_cells(), m.tets.size());
   // TT
   std::size_t tt_errors = 0;
   for (Index t = 0; t < m.tets.size(); ++t) tt_errors += b.tetrahedron_neighbors(t) != ref.neighbors(m, t);
@@ -221,9 +221,9 @@ void test_cube() {
   CHECK(b.triangulation().tds().is_valid(false, 1));
   CHECK(cells_and_vertices_valid(b));
   CHECK_EQUAL(euler_defect(b), 0L);
-  CHECK(b.number_of_finite_cells() == 6);
-  CHECK(b.number_of_infinite_cells() == 12);
-  CHECK(b.number_of_vertices() == 8);
+  CHECK_EQUAL(b.number_of_finite_cells(), 6);
+  CHECK_EQUAL(b.number_of_infinite_cells(), 12);
+  CHECK_EQUAL(b.number_of_vertices(), 8);
 
   std::vector<Index> vt0, vt1;
   b.vertex_tetrahedra(0, std::back_inserter(vt0));
@@ -239,8 +239,8 @@ void test_cube() {
   bool on_boundary = true;
   const std::vector<Index> diagonal = b.edge_star(0, 7, &on_boundary);
   CHECK(!on_boundary);
-  CHECK(diagonal.size() == 6);
-  CHECK(diagonal.front() == 0);
+  CHECK_EQUAL(diagonal.size(), 6);
+  CHECK_EQUAL(diagonal.front(), 0);
   auto share_face = [&](Index s, Index t) {
     const std::array<Index, 4> n = b.tetrahedron_neighbors(s);
     return std::find(n.begin(), n.end(), t) != n.end();
@@ -251,7 +251,7 @@ void test_cube() {
   // A boundary edge: an open fan from one boundary face to the other.
   const std::vector<Index> fan = b.edge_star(0, 1, &on_boundary);
   CHECK(on_boundary);
-  CHECK(fan.size() == 2);
+  CHECK_EQUAL(fan.size(), 2);
   CHECK(share_face(fan[0], fan[1]));
   CHECK(is_ordered_star(m, 0, 1, fan, false));
   CHECK(b.edge_star(1, 2).empty()); // not an edge
@@ -266,14 +266,14 @@ void test_cube() {
 void test_grid() {
   Mesh m = grid(10, 10, 10);
   m.points.emplace_back(-5, -5, -5); // a point used by no tetrahedron
-  CHECK(m.tets.size() == 6000);
+  CHECK_EQUAL(m.tets.size(), 6000);
   const Baseline b(m.points, m.tets);
   CHECK(b.triangulation().tds().is_valid(false, 1));
   CHECK(cells_and_vertices_valid(b));
   CHECK_EQUAL(euler_defect(b), 0L);
-  CHECK(b.number_of_vertices() == 11 * 11 * 11);
-  CHECK(b.number_of_input_vertices() == 11 * 11 * 11 + 1);
-  CHECK(b.vertex_handle(11 * 11 * 11) == Baseline::Vertex_handle());
+  CHECK_EQUAL(b.number_of_vertices(), 11 * 11 * 11);
+  CHECK_EQUAL(b.number_of_input_vertices(), 11 * 11 * 11 + 1);
+  CHECK_EQUAL(b.vertex_handle(11 * 11 * 11), Baseline::Vertex_handle());
   CHECK(!b.is_boundary_vertex(11 * 11 * 11));
   check_against_reference(m, b);
 }

@@ -175,10 +175,23 @@ std::string to_string(const T& v) {
   return os.str();
 }
 
+// a == b, also between integers of different signedness (a negative value equals no unsigned one).
+template <class A, class B>
+bool equal_values(const A& a, const B& b) {
+  if constexpr (std::is_integral_v<A> && std::is_integral_v<B> && !std::is_same_v<A, bool> &&
+                !std::is_same_v<B, bool> && std::is_signed_v<A> != std::is_signed_v<B>) {
+    if constexpr (std::is_signed_v<A>)
+      return a >= 0 && static_cast<std::make_unsigned_t<A>>(a) == b;
+    else
+      return b >= 0 && a == static_cast<std::make_unsigned_t<B>>(b);
+  } else
+    return a == b;
+}
+
 template <class A, class B>
 void check_equal(const A& a, const B& b, const char* ta, const char* tb, const char* file, int line) {
   record_check();
-  if (a == b) return;
+  if (equal_values(a, b)) return;
   record_failure(file, line,
                  std::string(ta) + " == " + tb + "\n    actual:   " + to_string(a) +
                      "\n    expected: " + to_string(b));

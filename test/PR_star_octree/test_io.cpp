@@ -133,7 +133,7 @@ static void test_medit() {
                         "Vertices 5\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n1 1 1 0\n");
   Mesh s;
   IO::read_medit(in, s, "stream.mesh");
-  CHECK(s.points.size() == 5);
+  CHECK_EQUAL(s.points.size(), 5);
   CHECK((s.tetrahedra == std::vector<Tet>{Tet{4, 3, 2, 1}})); // order kept
   CHECK((s.tetrahedron_labels == std::vector<int>{9}));
 
@@ -168,7 +168,7 @@ static void test_tetgen() {
   Mesh m =
       read_ok((tmp / "zero.ele").string(), [](const std::string& f, Mesh& mm) { IO::read_tetgen(f, mm); });
   CHECK(is_ref(m));
-  CHECK(m.point_data.size() == 2);
+  CHECK_EQUAL(m.point_data.size(), 2);
   CHECK(m.point_data.size() == 2 && m.point_data[0].name == "attribute_0" &&
         m.point_data[0].values == ref_temp);
   CHECK(m.point_data.size() == 2 && m.point_data[1].name == "attribute_1" &&
@@ -272,7 +272,7 @@ static void test_vtk() {
   Mesh m = read_ok(a, [](const std::string& f, Mesh& mm) { IO::read_vtk(f, mm); });
   CHECK(is_ref(m));
   CHECK((m.tetrahedron_labels == std::vector<int>{3, 4}));
-  CHECK(m.point_data.size() == 2);
+  CHECK_EQUAL(m.point_data.size(), 2);
   CHECK(m.point_data.size() == 2 && m.point_data[0].name == "temp x" && m.point_data[0].values == ref_temp);
   CHECK(m.point_data.size() == 2 && m.point_data[1].name == "f" &&
         m.point_data[1].values == (std::vector<double>{10, 11, 12, 13, 14}));
@@ -529,9 +529,9 @@ static void test_round_trips() {
     IO::write_medit(f, m);
     Mesh r;
     IO::read_medit(f, r);
-    CHECK(r.points == m.points);
-    CHECK(r.tetrahedra == m.tetrahedra);
-    CHECK(r.tetrahedron_labels == m.tetrahedron_labels);
+    CHECK_EQUAL(r.points, m.points);
+    CHECK_EQUAL(r.tetrahedra, m.tetrahedra);
+    CHECK_EQUAL(r.tetrahedron_labels, m.tetrahedron_labels);
   }
   // VTU, ascii and binary: everything, plus the extra array
   for (bool binary : {false, true}) {
@@ -539,14 +539,14 @@ static void test_round_trips() {
     IO::write_vtu(f, m, extra, binary);
     Mesh r;
     IO::read_vtu(f, r);
-    CHECK(r.points == m.points);
-    CHECK(r.tetrahedra == m.tetrahedra);
-    CHECK(r.tetrahedron_labels == m.tetrahedron_labels);
-    CHECK(r.point_data.size() == 3);
+    CHECK_EQUAL(r.points, m.points);
+    CHECK_EQUAL(r.tetrahedra, m.tetrahedra);
+    CHECK_EQUAL(r.tetrahedron_labels, m.tetrahedron_labels);
+    CHECK_EQUAL(r.point_data.size(), 3);
     if (r.point_data.size() == 3) {
       for (int i = 0; i < 2; ++i) {
-        CHECK(r.point_data[i].name == m.point_data[i].name);
-        CHECK(r.point_data[i].values == m.point_data[i].values);
+        CHECK_EQUAL(r.point_data[i].name, m.point_data[i].name);
+        CHECK_EQUAL(r.point_data[i].values, m.point_data[i].values);
       }
       CHECK(r.point_data[2].name == "extra" && r.point_data[2].values == extra[0].values);
     }
@@ -558,8 +558,8 @@ static void test_round_trips() {
     IO::write_tetrahedral_mesh(f, m);
     Mesh r;
     IO::read_tetrahedral_mesh(f, r);
-    CHECK(r.points == m.points);
-    CHECK(r.tetrahedra == m.tetrahedra);
+    CHECK_EQUAL(r.points, m.points);
+    CHECK_EQUAL(r.tetrahedra, m.tetrahedra);
     CHECK(r.point_data.size() == 1 && r.point_data[0].values == m.point_data[0].values);
   }
   // dispatcher: .MESH (upper case) and .vtu
@@ -642,7 +642,7 @@ static void test_shared(const prstar_test::Data_folders& data) {
     }
     CHECK_EQUAL(m.number_of_vertices(), c.nv);
     CHECK_EQUAL(m.number_of_tetrahedra(), c.nt);
-    CHECK((m.scalar_field() != nullptr) == c.scalar);
+    CHECK_EQUAL((m.scalar_field() != nullptr), c.scalar);
     // a binary VTU round trip of the real mesh
     IO::write_vtu((tmp / "real.vtu").string(), m, {}, true);
     Mesh r;

@@ -49,8 +49,8 @@ std::map<std::vector<double>, std::set<std::size_t>> check_invariants(const Tree
   using Index = typename Tree::Index;
   const std::size_t nv = input.number_of_vertices(), nt = input.number_of_tetrahedra();
   const prstar_test::Failure_context context(what);
-  CHECK(tree.number_of_vertices() == nv);
-  CHECK(tree.number_of_tetrahedra() == nt);
+  CHECK_EQUAL(tree.number_of_vertices(), nv);
+  CHECK_EQUAL(tree.number_of_tetrahedra(), nt);
 
   // Permutations are bijections; coordinates and scalars preserved.
   std::vector<int> seen(nv, 0);
@@ -62,7 +62,7 @@ std::map<std::vector<double>, std::set<std::size_t>> check_invariants(const Tree
       const auto& p = input.point(o);
       CHECK(tree.point(static_cast<Index>(v)).x() == p.x() &&
             tree.point(static_cast<Index>(v)).y() == p.y() && tree.point(static_cast<Index>(v)).z() == p.z());
-      if (input.has_scalar_field()) CHECK(tree.scalar(static_cast<Index>(v)) == input.scalar(o));
+      if (input.has_scalar_field()) CHECK_EQUAL(tree.scalar(static_cast<Index>(v)), input.scalar(o));
     }
   }
   CHECK(std::all_of(seen.begin(), seen.end(), [](int c) { return c == 1; }));
@@ -91,10 +91,10 @@ std::map<std::vector<double>, std::set<std::size_t>> check_invariants(const Tree
   std::size_t next = 0;
   for (auto n : tree.leaves()) {
     CHECK(tree.node(n).is_leaf());
-    CHECK(tree.node(n).vertex_begin == next);
+    CHECK_EQUAL(tree.node(n).vertex_begin, next);
     next = tree.node(n).vertex_end;
   }
-  CHECK(next == nv);
+  CHECK_EQUAL(next, nv);
   std::size_t leaf_count = 0;
   for (std::size_t n = 0; n < tree.number_of_nodes(); ++n) {
     const auto& nd = tree.node(static_cast<Index>(n));
@@ -108,17 +108,17 @@ std::map<std::vector<double>, std::set<std::size_t>> check_invariants(const Tree
         CHECK(all_same || tree.depth(static_cast<Index>(n)) == tree.max_depth());
       }
     } else {
-      CHECK(nd.number_of_tetrahedra() == 0);
-      CHECK(tree.node(nd.first_child).vertex_begin == nd.vertex_begin);
-      CHECK(tree.node(nd.first_child + 7).vertex_end == nd.vertex_end);
+      CHECK_EQUAL(nd.number_of_tetrahedra(), 0);
+      CHECK_EQUAL(tree.node(nd.first_child).vertex_begin, nd.vertex_begin);
+      CHECK_EQUAL(tree.node(nd.first_child + 7).vertex_end, nd.vertex_end);
       for (int c = 0; c < 7; ++c)
-        CHECK(tree.node(nd.first_child + c).vertex_end == tree.node(nd.first_child + c + 1).vertex_begin);
+        CHECK_EQUAL(tree.node(nd.first_child + c).vertex_end, tree.node(nd.first_child + c + 1).vertex_begin);
       for (int c = 0; c < 8; ++c) CHECK(tree.node(nd.first_child + c).parent == n);
       // Internal nodes hold more than k_v vertices (otherwise they would not have been split).
       CHECK(nd.number_of_vertices() > tree.bucket_size());
     }
   }
-  CHECK(leaf_count == tree.number_of_leaves());
+  CHECK_EQUAL(leaf_count, tree.number_of_leaves());
 
   // Every vertex lies in the box of its leaf and in no other leaf box (brute force over all leaves).
   const CGAL::Bbox_3 root = tree.bbox();
@@ -130,8 +130,8 @@ std::map<std::vector<double>, std::set<std::size_t>> check_invariants(const Tree
     for (Index v = nd.vertex_begin; v < nd.vertex_end; ++v) {
       leaf_of[v] = tree.leaves()[l];
       CHECK(in_box(tree.point(v), boxes[l], root));
-      CHECK(tree.leaf_of_vertex(v) == tree.leaves()[l]);
-      CHECK(tree.locate(tree.point(v)) == tree.leaves()[l]);
+      CHECK_EQUAL(tree.leaf_of_vertex(v), tree.leaves()[l]);
+      CHECK_EQUAL(tree.locate(tree.point(v)), tree.leaves()[l]);
     }
   }
   // In no other leaf box: every vertex when |V| |leaves| is small, a regular sample of them
@@ -166,13 +166,13 @@ std::map<std::vector<double>, std::set<std::size_t>> check_invariants(const Tree
   for (std::size_t t = 0; t < nt; ++t) {
     std::set<Index> expected;
     for (Index v : tree.tetrahedron(static_cast<Index>(t))) expected.insert(leaf_of[v]);
-    CHECK(listed[t] == expected);
+    CHECK_EQUAL(listed[t], expected);
   }
   const auto s = tree.statistics();
-  CHECK(s.leaf_tetrahedra_entries == entries);
+  CHECK_EQUAL(s.leaf_tetrahedra_entries, entries);
   CHECK(nt == 0 || (s.chi >= 1.0 && s.chi <= 4.0));
   CHECK(s.nodes == tree.number_of_nodes() && s.leaves == tree.number_of_leaves());
-  CHECK((s.nodes - 1) % 8 == 0);
+  CHECK_EQUAL((s.nodes - 1) % 8, 0);
 
   std::map<std::vector<double>, std::set<std::size_t>> shape;
   for (std::size_t l = 0; l < boxes.size(); ++l) {
@@ -213,9 +213,9 @@ void check_shuffle_invariance(const Mesh& mesh, std::size_t kv, const std::strin
     for (std::size_t v : kvp.second) mapped.insert(perm[v]);
     kvp.second = mapped;
   }
-  CHECK(shape_a == shape_b);
-  CHECK(a.number_of_nodes() == b.number_of_nodes());
-  CHECK(a.statistics().chi == b.statistics().chi);
+  CHECK_EQUAL(shape_a, shape_b);
+  CHECK_EQUAL(a.number_of_nodes(), b.number_of_nodes());
+  CHECK_EQUAL(a.statistics().chi, b.statistics().chi);
 }
 
 // A hand-checked mesh: the unit cube split into 6 tetrahedra around the diagonal (0,0,0)-(1,1,1),
@@ -231,11 +231,11 @@ void test_hand_checked() {
   // k_v = infinity: one leaf holding everything.
   CGAL::PR_star_octree_3<> single(in, CGAL::PR_star_octree_3<>::infinite_bucket_size);
   CHECK(single.number_of_nodes() == 1 && single.number_of_leaves() == 1);
-  CHECK(single.leaf_tetrahedra(0).size() == tets.size());
+  CHECK_EQUAL(single.leaf_tetrahedra(0).size(), tets.size());
   auto s = single.statistics();
-  CHECK(s.chi == 1.0);
-  CHECK(s.unreferenced_vertices == 1);
-  CHECK(s.duplicate_vertices == 0);
+  CHECK_EQUAL(s.chi, 1.0);
+  CHECK_EQUAL(s.unreferenced_vertices, 1);
+  CHECK_EQUAL(s.duplicate_vertices, 0);
   // Hand-computed cost model: |V| = 10, |T| = 7, |N| = 1, chi = 1.
   CHECK(std::abs(s.prstar_overhead_per_vertex - (7.0 + 7.0) / 10) < 1e-12);
   CHECK(std::abs(s.prstar_total_per_vertex - (5.0 * 7 + 30 + 7) / 10) < 1e-12);
@@ -247,20 +247,20 @@ void test_hand_checked() {
   std::size_t negative = 0;
   for (auto& c : tets)
     negative += CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]) == CGAL::NEGATIVE;
-  CHECK(s.reoriented_tetrahedra == negative);
+  CHECK_EQUAL(s.reoriented_tetrahedra, negative);
   CHECK(negative > 0 && negative < tets.size());
 
   // Bounding cube [0,5]^3, mid 2.5: k_v = 9 splits the root once; (5,5,5) goes alone to octant 7
   // (upper faces of the root are closed), the 9 others to octant 0.
   CGAL::PR_star_octree_3<> one(in, 9);
-  CHECK(one.number_of_nodes() == 9);
-  CHECK(one.number_of_leaves() == 8);
-  CHECK(one.depth() == 1);
-  CHECK(one.node(1).number_of_vertices() == 9);
-  CHECK(one.node(8).number_of_vertices() == 1);
-  CHECK(one.original_vertex(9) == 9);
-  CHECK(one.statistics().empty_leaves == 6);
-  CHECK(one.statistics().chi == 1.0);
+  CHECK_EQUAL(one.number_of_nodes(), 9);
+  CHECK_EQUAL(one.number_of_leaves(), 8);
+  CHECK_EQUAL(one.depth(), 1);
+  CHECK_EQUAL(one.node(1).number_of_vertices(), 9);
+  CHECK_EQUAL(one.node(8).number_of_vertices(), 1);
+  CHECK_EQUAL(one.original_vertex(9), 9);
+  CHECK_EQUAL(one.statistics().empty_leaves, 6);
+  CHECK_EQUAL(one.statistics().chi, 1.0);
   check_invariants(one, in, "hand-checked, k_v = 9");
   // The same through the named-parameter constructor.
   CGAL::PR_star_octree_3<> one_np(in, CGAL::PR_star_octree::parameters::bucket_size(std::size_t(9)));
@@ -271,8 +271,8 @@ void test_hand_checked() {
   // k_v = 1: every vertex in its own leaf; chi = (6 * 4 + 4) / 7.
   CGAL::PR_star_octree_3<> tiny(in, 1);
   check_invariants(tiny, in, "hand-checked, k_v = 1");
-  CHECK(tiny.statistics().max_leaf_vertices == 1);
-  CHECK(tiny.statistics().chi == 4.0);
+  CHECK_EQUAL(tiny.statistics().max_leaf_vertices, 1);
+  CHECK_EQUAL(tiny.statistics().chi, 4.0);
   // Vertex (2,0,0) and (1,0,0): split at 2.5, 1.25, 0.625 ... they separate at depth 2 (mid 1.25).
   CHECK(tiny.leaf_of_vertex(0) != tiny.leaf_of_vertex(1));
 }
@@ -287,11 +287,11 @@ void test_duplicates_and_depth() {
   auto in = CGAL::PR_star_octree::make_input(pts, tets);
   CGAL::PR_star_octree_3<> tree(in, 4);
   const auto s = tree.statistics();
-  CHECK(s.duplicate_vertices == 99);
+  CHECK_EQUAL(s.duplicate_vertices, 99);
   CHECK(s.depth_limited_leaves + s.coincident_leaves >= 1);
   CHECK(s.max_leaf_vertices >= 100);
   CHECK(s.depth <= tree.max_depth());
-  CHECK(s.degenerate_tetrahedra == 1);
+  CHECK_EQUAL(s.degenerate_tetrahedra, 1);
   check_invariants(tree, in, "duplicates");
 
   // A small depth bound: leaves over k_v are allowed at the bound, and reported.
@@ -302,9 +302,9 @@ void test_duplicates_and_depth() {
   std::vector<std::array<int, 4>> none;
   auto cin = CGAL::PR_star_octree::make_input(cloud, none);
   CGAL::PR_star_octree_3<> shallow(cin, 2, 2);
-  CHECK(shallow.depth() == 2);
+  CHECK_EQUAL(shallow.depth(), 2);
   CHECK(shallow.statistics().depth_limited_leaves > 0);
-  CHECK(shallow.number_of_nodes() == 1 + 8 + 64);
+  CHECK_EQUAL(shallow.number_of_nodes(), 1 + 8 + 64);
   namespace params = CGAL::PR_star_octree::parameters;
   CGAL::PR_star_octree_3<> shallow_np(cin, params::bucket_size(std::size_t(2)).maximum_depth(std::size_t(2)));
   CHECK_EQUAL(shallow_np.max_depth(), std::size_t(2));
@@ -374,7 +374,7 @@ void test_table1_behaviour(const Mesh& mesh, const std::string& what) {
     prev_chi = s.chi;
     prev_nodes = s.nodes;
   }
-  CHECK(prev_chi == 1.0);
+  CHECK_EQUAL(prev_chi, 1.0);
 }
 
 } // namespace

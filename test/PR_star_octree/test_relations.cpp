@@ -291,7 +291,7 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
   for (Index v = 0; v < mesh.points.size(); ++v) {
     ia.vertex_tetrahedra(v, star, stack);
     std::sort(star.begin(), star.end());
-    if (!pinched[v]) CHECK(star == truth.vt[v]);
+    if (!pinched[v]) CHECK_EQUAL(star, truth.vt[v]);
     // At a pinched vertex the walk of the IA reaches one component of the star only.
     else
       CHECK(!star.empty() && std::includes(truth.vt[v].begin(), truth.vt[v].end(), star.begin(), star.end()));
@@ -317,12 +317,12 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
   }
   if (with_cgal) {
     const auto& cgal = *cgal_ptr;
-    CHECK(cgal.number_of_finite_cells() == mesh.tetrahedra.size());
+    CHECK_EQUAL(cgal.number_of_finite_cells(), mesh.tetrahedra.size());
     for (Index v = 0; v < mesh.points.size(); ++v) {
       std::vector<Index> s;
       cgal.vertex_tetrahedra(v, std::back_inserter(s));
       std::sort(s.begin(), s.end());
-      CHECK(s == truth.vt[v]);
+      CHECK_EQUAL(s, truth.vt[v]);
     }
     for (Index t = 0; t < mesh.tetrahedra.size(); ++t) {
       const auto n = cgal.tetrahedron_neighbors(t);
@@ -330,7 +330,7 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
       for (int k = 0; k < 4; ++k) {
         const auto* f = truth.tets_of_face({{c[(k + 1) & 3], c[(k + 2) & 3], c[(k + 3) & 3]}});
         const Index expected = f->size() == 1 ? Index(-1) : ((*f)[0] == t ? (*f)[1] : (*f)[0]);
-        CHECK(n[k] == expected);
+        CHECK_EQUAL(n[k], expected);
       }
     }
     cgal.for_each_edge_star([&](Index a, Index b, const std::vector<Index>& s, bool on_boundary) {
@@ -340,12 +340,12 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
       if (it == truth.edges.end()) return;
       std::vector<Index> sorted = s;
       std::sort(sorted.begin(), sorted.end());
-      CHECK(sorted == it->second);
-      CHECK(on_boundary == truth.is_boundary_edge(a, b));
+      CHECK_EQUAL(sorted, it->second);
+      CHECK_EQUAL(on_boundary, truth.is_boundary_edge(a, b));
       CHECK(is_ordered_star(mesh, s, !on_boundary));
       cgal_stars[key] = s;
     });
-    CHECK(cgal_stars.size() == truth.edges.size());
+    CHECK_EQUAL(cgal_stars.size(), truth.edges.size());
   }
 
   // Boundary (paper Section 7) and distortion (Section 8): against brute force, IA and CGAL.
@@ -493,16 +493,16 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
         std::vector<Index> s;
         for (Index t : local.vertex_tetrahedra(v)) s.push_back(orig_t(t));
         std::sort(s.begin(), s.end());
-        CHECK(s == truth.vt[orig_v(v)]);
+        CHECK_EQUAL(s, truth.vt[orig_v(v)]);
         CHECK(std::is_sorted(local.vertex_tetrahedra(v).begin(), local.vertex_tetrahedra(v).end()));
         // VV.
         std::set<Index> w;
         for (Index u : local.vertex_vertices(v)) w.insert(orig_v(u));
-        CHECK(w == truth.vv[orig_v(v)]);
+        CHECK_EQUAL(w, truth.vv[orig_v(v)]);
         // Vertex link: the faces opposite v, positively oriented with v first.
         std::vector<std::array<Index, 3>> link;
         local.vertex_link(v, std::back_inserter(link));
-        CHECK(link.size() == s.size());
+        CHECK_EQUAL(link.size(), s.size());
         for (const auto& f : link) {
           CHECK(CGAL::orientation(tree.point(v), tree.point(f[0]), tree.point(f[1]), tree.point(f[2])) !=
                 CGAL::NEGATIVE);
@@ -514,7 +514,7 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
           CHECK(local.edge(e).v0 == v || local.edge(e).v1 == v);
           ++degree;
         }
-        CHECK(degree == truth.vv[orig_v(v)].size());
+        CHECK_EQUAL(degree, truth.vv[orig_v(v)].size());
       }
       // TT (Algorithm 2): exact for faces with a vertex in the leaf; random access for all.
       for (std::size_t i = 0; i < tets.size(); ++i) {
@@ -532,9 +532,9 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
                                     local.is_local_vertex(c[(k + 2) & 3]) ||
                                     local.is_local_vertex(c[(k + 3) & 3]);
           if (face_in_leaf)
-            CHECK((got == Local::no_neighbor ? got : orig_t(got)) == expected);
+            CHECK_EQUAL((got == Local::no_neighbor ? got : orig_t(got)), expected);
           else
-            CHECK(got == Local::unknown_neighbor);
+            CHECK_EQUAL(got, Local::unknown_neighbor);
         }
       }
       // Edges: stars as sets and as cyclic sequences, links, boundary flags, each owned once.
@@ -550,10 +550,10 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
         for (Index t : local.edge_tetrahedra(e)) s.push_back(orig_t(t));
         std::vector<Index> sorted = s;
         std::sort(sorted.begin(), sorted.end());
-        CHECK(sorted == it->second);
+        CHECK_EQUAL(sorted, it->second);
         const bool boundary = truth.is_boundary_edge(key.first, key.second);
         const bool manifold = truth.is_manifold_edge(mesh, key.first, key.second);
-        CHECK(local.is_nonmanifold_edge(e) == !manifold);
+        CHECK_EQUAL(local.is_nonmanifold_edge(e), !manifold);
         if (!manifold) {
           if (local.owns_edge(e)) {
             ++edges_owned;
@@ -561,14 +561,14 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
           }
           continue;
         }
-        CHECK(local.is_boundary_edge(e) == boundary);
+        CHECK_EQUAL(local.is_boundary_edge(e), boundary);
         CHECK(is_ordered_star(mesh, s, !boundary));
         // The same cyclic order as CGAL's circulator around the edge (up to rotation and reversal).
         if (with_cgal) CHECK(same_star(s, cgal_stars[key], !boundary));
         // The link: one vertex per tetrahedron (closed) or one more (open); tetrahedron i holds
         // link vertices i and i+1 (cyclically).
         const auto lk = local.edge_link(e);
-        CHECK(lk.size() == s.size() + (boundary ? 1 : 0));
+        CHECK_EQUAL(lk.size(), s.size() + (boundary ? 1 : 0));
         for (std::size_t i = 0; i < s.size() && lk.size() == s.size() + (boundary ? 1 : 0); ++i) {
           const auto& c = tree.tetrahedron(local.edge_tetrahedra(e).begin()[i]);
           const Index x = lk.begin()[i], y = lk.begin()[(i + 1) % lk.size()];
@@ -595,7 +595,7 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
         std::sort(s.begin(), s.end());
         std::vector<Index> expected = *ft;
         std::sort(expected.begin(), expected.end());
-        CHECK(s == expected);
+        CHECK_EQUAL(s, expected);
         if (local.owns_triangle(f)) {
           ++triangles_owned;
           boundary_owned += s.size() == 1;
@@ -603,14 +603,14 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
         }
       }
     });
-    CHECK(edges_owned == truth.edges.size());
-    CHECK(triangles_owned == truth.faces.size());
-    CHECK(boundary_owned == truth.boundary_faces());
+    CHECK_EQUAL(edges_owned, truth.edges.size());
+    CHECK_EQUAL(triangles_owned, truth.faces.size());
+    CHECK_EQUAL(boundary_owned, truth.boundary_faces());
     const auto counts = CGAL::PR_star_octree::count_simplices(tree);
-    CHECK(counts.edges == truth.edges.size());
-    CHECK(counts.triangles == truth.faces.size());
-    CHECK(counts.boundary_triangles == truth.boundary_faces());
-    CHECK(counts.vertices == truth.referenced);
+    CHECK_EQUAL(counts.edges, truth.edges.size());
+    CHECK_EQUAL(counts.triangles, truth.faces.size());
+    CHECK_EQUAL(counts.boundary_triangles, truth.boundary_faces());
+    CHECK_EQUAL(counts.vertices, truth.referenced);
     CHECK(counts.euler_characteristic() == (long long)truth.referenced - (long long)truth.edges.size() +
                                                (long long)truth.faces.size() -
                                                (long long)mesh.tetrahedra.size());
