@@ -57,12 +57,12 @@ void check_adapter(const C3t3& c3t3, const std::string& name, bool convex) {
   const std::size_t nv = input.number_of_vertices(), nt = input.number_of_tetrahedra();
 
   // the tetrahedra are exactly the cells in the complex, in CGAL's iteration order
-  CHECK(nt == static_cast<std::size_t>(c3t3.number_of_cells_in_complex()));
+  CHECK_EQUAL(nt, static_cast<std::size_t>(c3t3.number_of_cells_in_complex()));
   CHECK(nt > 1000);
   std::size_t t = 0;
   for (auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c, ++t)
     CHECK(t < nt && input.cell_handle(t) == Cell_handle(c));
-  CHECK(t == nt);
+  CHECK_EQUAL(t, nt);
 
   // cells outside the domain are left out (they exist in the hole of the torus)
   std::size_t outside = 0;
@@ -77,7 +77,7 @@ void check_adapter(const C3t3& c3t3, const std::string& name, bool convex) {
   std::set<Vertex_handle> from_input;
   for (std::size_t i = 0; i < nv; ++i) from_input.insert(input.vertex_handle(i));
   CHECK(from_input.size() == nv); // no vertex twice
-  CHECK(from_input == from_cells);
+  CHECK_EQUAL(from_input, from_cells);
   // ... and not the corners of the complex (none for these smooth shapes)
   CHECK(static_cast<std::size_t>(c3t3.number_of_vertices_in_complex()) != nv);
   CHECK(nv <= static_cast<std::size_t>(tr.number_of_vertices()));
@@ -131,7 +131,7 @@ void check_adapter(const C3t3& c3t3, const std::string& name, bool convex) {
   // the conversion to arrays gives the adapter's numbering and the subdomain labels
   const Mesh mesh = CGAL::PR_star_octree::c3t3_to_indexed_tetrahedral_mesh(c3t3);
   CHECK(mesh.number_of_vertices() == nv && mesh.number_of_tetrahedra() == nt);
-  CHECK(mesh.tetrahedron_labels.size() == nt);
+  CHECK_EQUAL(mesh.tetrahedron_labels.size(), nt);
   bool same = mesh.number_of_vertices() == nv && mesh.number_of_tetrahedra() == nt;
   for (std::size_t i = 0; same && i < nv; ++i) same = mesh.points[i] == input.point(i);
   for (t = 0; same && t < nt; ++t) {
@@ -171,7 +171,7 @@ double check_mesh(const Mesh& mesh, const std::string& name) {
   std::cerr << "mesh " << name << ": " << mesh.number_of_vertices() << " vertices, "
             << mesh.number_of_tetrahedra() << " tetrahedra" << std::endl;
   CHECK(mesh.number_of_tetrahedra() > 100);
-  CHECK(mesh.tetrahedron_labels.size() == mesh.number_of_tetrahedra());
+  CHECK_EQUAL(mesh.tetrahedron_labels.size(), mesh.number_of_tetrahedra());
   std::vector<bool> used(mesh.number_of_vertices(), false);
   bool in_range = true, positive = true;
   double volume = 0;
@@ -190,7 +190,7 @@ double check_mesh(const Mesh& mesh, const std::string& name) {
   }
   CHECK(in_range);
   CHECK(positive);
-  CHECK(std::find(used.begin(), used.end(), false) == used.end());
+  CHECK_EQUAL(std::find(used.begin(), used.end(), false), used.end());
   return volume;
 }
 
@@ -223,9 +223,9 @@ int main(int, char**) {
   // 2. generate_mesh: valid, deterministic, the right volume (Mesh_3 and TetGen).
   const Mesh m1 = prstar::generate_mesh(options("sphere", 0.1));
   const Mesh m2 = prstar::generate_mesh(options("sphere", 0.1));
-  CHECK(m1.points == m2.points);
-  CHECK(m1.tetrahedra == m2.tetrahedra);
-  CHECK(m1.number_of_tetrahedra() == static_cast<std::size_t>(sphere.number_of_cells_in_complex()));
+  CHECK_EQUAL(m1.points, m2.points);
+  CHECK_EQUAL(m1.tetrahedra, m2.tetrahedra);
+  CHECK_EQUAL(m1.number_of_tetrahedra(), static_cast<std::size_t>(sphere.number_of_cells_in_complex()));
   CHECK_CLOSE(check_mesh(m1, "sphere (Mesh_3)"), 4. / 3. * pi, 0.03);
 
   prstar::Generate_options tg = options("sphere", 0.1);
