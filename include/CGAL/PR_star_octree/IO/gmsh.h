@@ -75,8 +75,8 @@ void read_gmsh(std::istream& in, Mesh& mesh, const std::string& name = "<stream>
 /// replaced on success.
 template <class Mesh>
 void read_gmsh(const std::string& filename, Mesh& mesh) {
-  const std::string data = internal::load_file(filename);
-  internal::Gmsh_reader<Mesh>(data, filename).read(mesh);
+  const internal::File_bytes data(filename);
+  internal::Gmsh_reader<Mesh>(data.view(), filename).read(mesh);
 }
 
 /// \ingroup PkgPRStarOctreeIO

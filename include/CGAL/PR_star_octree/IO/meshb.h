@@ -92,6 +92,7 @@ void read_meshb_data(std::string_view data, const std::string& name, Mesh& resul
                             " bytes each)");
         const std::size_t nv = static_cast<std::size_t>(count);
         mesh.points.reserve(nv);
+        advise_huge_pages(mesh.points.data(), nv * sizeof(Point_3));
         for (std::size_t i = 0; i < nv; ++i) {
           const double x = c.get_real(real_bytes, "vertex"), y = c.get_real(real_bytes, "vertex"),
                        z = c.get_real(real_bytes, "vertex");
@@ -111,6 +112,8 @@ void read_meshb_data(std::string_view data, const std::string& name, Mesh& resul
         const std::size_t nt = static_cast<std::size_t>(count);
         mesh.tetrahedra.reserve(nt);
         mesh.tetrahedron_labels.reserve(nt);
+        advise_huge_pages(mesh.tetrahedra.data(), nt * sizeof(typename Mesh::Tetrahedron));
+        advise_huge_pages(mesh.tetrahedron_labels.data(), nt * sizeof(int));
         for (std::size_t i = 0; i < nt; ++i) {
           typename Mesh::Tetrahedron t;
           for (int k = 0; k < 4; ++k) {
@@ -183,8 +186,8 @@ void read_meshb(std::istream& in, Mesh& mesh, const std::string& name = "<stream
 /// non-finite coordinate.  `mesh` is left unchanged on error and replaced on success.
 template <class Mesh>
 void read_meshb(const std::string& filename, Mesh& mesh) {
-  const std::string data = internal::load_file(filename);
-  internal::read_meshb_data(data, filename, mesh);
+  const internal::File_bytes data(filename);
+  internal::read_meshb_data(data.view(), filename, mesh);
 }
 
 /// \ingroup PkgPRStarOctreeIO

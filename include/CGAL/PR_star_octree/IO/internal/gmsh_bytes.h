@@ -11,15 +11,26 @@
 // Every read is bounds-checked; errors name the file and the byte offset.
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/internal/text.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <system_error>
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace CGAL {
 namespace PR_star_octree {
@@ -106,6 +117,68 @@ private:
   std::string name_;
   bool swap_;
   std::size_t pos_ = 0;
+};
+
+/// Asks the kernel to back the (not yet touched) memory of a large array with huge pages: for the
+/// arrays of hundreds of megabytes a binary reader fills, the page faults of 4 kB pages cost more
+/// than the parsing.  A hint only (Linux), without effect elsewhere or when refused.
+inline void advise_huge_pages(const void* data, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const std::size_t page = std::size_t(1) << 21;
+  if (data == nullptr || bytes < 2 * page) return;
+  const std::uintptr_t begin =
+      (reinterpret_cast<std::uintptr_t>(data) + page - 1) & ~std::uintptr_t(page - 1);
+  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~std::uintptr_t(page - 1);
+  if (end > begin) (void)::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
+/// The whole content of a file in memory, like `load_file()` (same errors), but in a buffer that
+/// is not zero-filled first and may be backed by huge pages (reading a 1 GB binary file from the
+/// page cache then costs a copy, not a million page faults).
+class File_bytes {
+public:
+  explicit File_bytes(const std::string& filename) {
+    std::error_code ec;
+    const std::filesystem::path path(filename);
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (!ec && std::filesystem::is_regular_file(status)) {
+      const std::uintmax_t size = std::filesystem::file_size(path, ec);
+      if (!ec && size > 0 && size < std::uintmax_t(std::numeric_limits<std::size_t>::max() / 2)) {
+        const std::size_t n = static_cast<std::size_t>(size);
+        const std::size_t align = std::size_t(1) << 21;
+        const std::size_t rounded = (n + align - 1) / align * align;
+        buffer_.reset(static_cast<char*>(std::aligned_alloc(align, rounded)));
+        if (buffer_) {
+          advise_huge_pages(buffer_.get(), rounded);
+          std::ifstream in(filename, std::ios::in | std::ios::binary);
+          if (!in) throw Read_error(filename, 0, "cannot open the file for reading");
+          in.read(buffer_.get(), static_cast<std::streamsize>(n));
+          if (in.bad() || static_cast<std::uintmax_t>(in.gcount()) != size)
+            throw Read_error(filename, 0, "error while reading the file");
+          view_ = std::string_view(buffer_.get(), n);
+          return;
+        }
+      }
+    }
+    text_ = load_file(filename);
+    view_ = text_;
+  }
+  File_bytes(const File_bytes&) = delete;
+  File_bytes& operator=(const File_bytes&) = delete;
+
+  std::string_view view() const { return view_; }
+
+private:
+  struct Free {
+    void operator()(char* p) const { std::free(p); }
+  };
+  std::unique_ptr<char, Free> buffer_;
+  std::string text_;
+  std::string_view view_;
 };
 
 /// Appends the bytes of `v` (machine byte order) to `out`.

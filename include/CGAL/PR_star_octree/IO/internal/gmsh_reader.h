@@ -432,6 +432,10 @@ private:
     }
   }
 
+  void advise_node_arrays() {
+    advise_huge_pages(mesh_.points.data(), mesh_.points.capacity() * sizeof(Point_3));
+    advise_huge_pages(tags_.data(), tags_.capacity() * sizeof(std::uint64_t));
+  }
   void check_node_count(std::uint64_t n) {
     if (n >= static_cast<std::uint64_t>(std::numeric_limits<Index>::max()))
       fail(std::to_string(n) + " nodes do not fit in the index type of the mesh");
@@ -464,6 +468,7 @@ private:
                    binary_ ? size_bytes_ + 24 : 8);
     capped_reserve(tags_, static_cast<std::size_t>(std::min<std::uint64_t>(total, left)), left,
                    binary_ ? size_bytes_ + 24 : 8);
+    advise_node_arrays();
     for (std::uint64_t b = 0; b < blocks; ++b) {
       int dim, parametric;
       std::uint64_t n;
@@ -530,6 +535,7 @@ private:
     const std::size_t cap = static_cast<std::size_t>(std::min<std::uint64_t>(n, left));
     capped_reserve(mesh_.points, cap, left, binary_ ? 28 : 8);
     capped_reserve(tags_, cap, left, binary_ ? 28 : 8);
+    advise_node_arrays();
     if (binary_) {
       const char* p = d_.data() + pos_;
       for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i, p += 28) {
@@ -582,6 +588,9 @@ private:
     const std::size_t k = static_cast<std::size_t>(std::min<std::uint64_t>(n, left / min_bytes + 1));
     mesh_.tetrahedra.reserve(k);
     mesh_.tetrahedron_labels.reserve(k);
+    advise_huge_pages(mesh_.tetrahedra.data(),
+                      mesh_.tetrahedra.capacity() * sizeof(typename Mesh::Tetrahedron));
+    advise_huge_pages(mesh_.tetrahedron_labels.data(), mesh_.tetrahedron_labels.capacity() * sizeof(int));
   }
   void skipped(const char* name, std::uint64_t n) {
     if (n != 0) mesh_.skipped_cells[name] += static_cast<std::size_t>(n);
