@@ -117,3 +117,71 @@ put("vtu", "cdata.vtu", "<?xml version='1.0'?><VTKFile type='UnstructuredGrid' b
 put("tet_off", "a.off", "OFF\n# comment\n5 2\n0 0 0 0.5\n1 0 0 1\n0 1 0 2\n0 0 1 3\n1 1 1 4\n0 1 2 3\n1 2 3 4\n")
 put("tet_off", "b.ts", "5\n2\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n\n4 0 1 2 3\n4 1 2 3 4\n# trailing\n")
 put("tet_off", "c.off", "5 2\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n0 1 2 3\n1 2 3 4\n")
+
+# ---- gmsh .msh (2.2 and 4.1, ASCII and binary; mixed elements, sparse tags, physical names)
+TAGS = [10, 3, 700, 8, 9]
+names = "$PhysicalNames\n2\n3 7 \"left\"\n2 5 \"skin\"\n$EndPhysicalNames\n"
+put("msh", "a22.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n" + names + "$Nodes\n5\n" +
+    "".join("%d %g %g %g\n" % ((TAGS[i],) + p) for i, p in enumerate(P)) + "$EndNodes\n$Elements\n4\n"
+    "1 15 2 0 1 10\n2 2 2 5 1 10 3 700\n3 4 2 7 1 10 3 700 8\n4 4 3 9 2 0 3 700 8 9\n$EndElements\n"
+    "$NodeData\n1\n\"t\"\n1\n0.0\n3\n0\n1\n1\n10 1.5\n$EndNodeData\n")
+put("msh", "a41.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n" + names +
+    "$Entities\n1 0 1 2\n1 0 0 0 0\n2 0 0 0 1 1 0 1 5 0\n1 0 0 0 1 1 1 1 7 1 2\n2 0 0 0 1 1 1 0 0\n$EndEntities\n"
+    "$Nodes\n2 5 3 700\n3 1 0 3\n10\n3\n700\n0 0 0\n1 0 0\n0 1 0\n2 2 1 2\n8\n9\n0 0 1 0.5 0.5\n1 1 1 0 0\n"
+    "$EndNodes\n$Elements\n3 4 1 4\n2 2 2 1\n1 10 3 700\n3 1 4 2\n2 10 3 700 8\n3 3 700 8 9\n"
+    "3 2 11 1\n4 10 3 700 8 9 9 9 9 9 9\n$EndElements\n")
+
+
+def msh41_binary(endian):
+    q = lambda *v: struct.pack(endian + "%dQ" % len(v), *v)
+    i = lambda *v: struct.pack(endian + "%di" % len(v), *v)
+    d = lambda *v: struct.pack(endian + "%dd" % len(v), *v)
+    b = b"$MeshFormat\n4.1 1 8\n" + i(1) + b"\n$EndMeshFormat\n$Entities\n" + q(0, 0, 0, 1)
+    b += i(1) + d(0, 0, 0, 1, 1, 1) + q(1) + i(7) + q(0) + b"\n$EndEntities\n$Nodes\n" + q(1, 5, 3, 700)
+    b += i(3, 1, 0) + q(5) + q(*TAGS) + d(*[c for p in P for c in p]) + b"\n$EndNodes\n$Elements\n"
+    b += q(2, 3, 1, 3) + i(3, 1, 4) + q(2) + q(1, 10, 3, 700, 8) + q(2, 3, 700, 8, 9)
+    b += i(2, 1, 2) + q(1) + q(3, 10, 3, 700) + b"\n$EndElements\n"
+    return b
+
+
+def msh22_binary(endian):
+    i = lambda *v: struct.pack(endian + "%di" % len(v), *v)
+    d = lambda *v: struct.pack(endian + "%dd" % len(v), *v)
+    b = b"$MeshFormat\n2.2 1 8\n" + i(1) + b"\n$EndMeshFormat\n$Nodes\n5\n"
+    b += b"".join(i(TAGS[k]) + d(*p) for k, p in enumerate(P)) + b"\n$EndNodes\n$Elements\n3\n"
+    b += i(4, 2, 2) + i(1, 7, 1, 10, 3, 700, 8) + i(2, 0, 1, 3, 700, 8, 9) + i(15, 1, 1) + i(3, 0, 9)
+    return b + b"\n$EndElements\n"
+
+
+put("msh", "b41.msh", msh41_binary("<"))
+put("msh", "b41be.msh", msh41_binary(">"))
+put("msh", "b22.msh", msh22_binary("<"))
+put("msh", "b22be.msh", msh22_binary(">"))
+
+
+# ---- Medit binary .meshb (versions 1-4, both byte orders, a skipped keyword)
+def meshb(version, endian):
+    r = "f" if version == 1 else "d"
+    n = "q" if version == 4 else "i"
+    pos = "q" if version >= 3 else "i"
+    k = lambda v: struct.pack(endian + "i", v)
+    body = b""
+    out = k(1) + k(version)
+    size = lambda fmt: struct.calcsize(endian + fmt)
+    at = len(out)
+    out += k(3) + struct.pack(endian + pos, at + 4 + size(pos) + 4) + k(3)
+    tri = struct.pack(endian + n * 5, 1, 1, 2, 3, 0)
+    at = len(out)
+    out += k(6) + struct.pack(endian + pos, at + 4 + size(pos) + len(tri)) + tri
+    verts = struct.pack(endian + n, 5) + b"".join(struct.pack(endian + r * 3 + n, *(p + (0,))) for p in P)
+    at = len(out)
+    out += k(4) + struct.pack(endian + pos, at + 4 + size(pos) + len(verts)) + verts
+    tets = struct.pack(endian + n, 2) + b"".join(struct.pack(endian + n * 5, *([v + 1 for v in t] + [3])) for t in T)
+    at = len(out)
+    out += k(8) + struct.pack(endian + pos, at + 4 + size(pos) + len(tets)) + tets
+    return out + k(54) + struct.pack(endian + pos, 0) + body
+
+
+for version in (1, 2, 3, 4):
+    put("meshb", "v%d.meshb" % version, meshb(version, "<"))
+put("meshb", "v2be.meshb", meshb(2, ">"))

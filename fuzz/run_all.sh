@@ -8,7 +8,7 @@ set -uo pipefail
 cd "$(dirname "$0")/build"
 per=${SECONDS_PER_TARGET:-600}
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(medit tetgen vtk vtu tet_off)
+[ ${#targets[@]} -eq 0 ] && targets=(medit tetgen vtk vtu tet_off msh meshb)
 mkdir -p logs
 for t in "${targets[@]}"; do
   mkdir -p "artifacts/$t" "corpus/$t"
