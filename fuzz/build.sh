@@ -13,6 +13,8 @@ for t in "${targets[@]}"; do
   "$CXX" -std=c++17 -g -O1 -fno-omit-frame-pointer -frounding-math \
     -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
     -I../include \
-    "fuzz_$t.cpp" -o "build/fuzz_$t" -lgmp -lmpfr
+    -DCGAL_PR_STAR_OCTREE_HAS_ZLIB -DCGAL_PR_STAR_OCTREE_HAS_LZ4 -DCGAL_PR_STAR_OCTREE_HAS_LZMA \
+    "fuzz_$t.cpp" -o "build/fuzz_$t" -lgmp -lmpfr -lz -llz4 -llzma
 done
 python3 make_seeds.py build/corpus
+/usr/bin/python3 fuzz_vtu_seeds.py build/corpus # compressed VTU, binary VTK (written by VTK)

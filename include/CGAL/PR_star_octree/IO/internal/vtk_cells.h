@@ -14,9 +14,11 @@
 
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -98,19 +100,112 @@ inline bool vtk_integer_valued(const std::vector<double>& values) {
   return true;
 }
 
-/// Appends to `tetrahedra` the tetrahedra among the cells given by `starts` (cell `i` is
-/// `connectivity[starts[i] .. starts[i+1]-1]`, `starts.size()` is the number of cells + 1),
-/// checking that every tetrahedron (VTK type 10) has 4 distinct vertex indices in `[0, nv)`;
-/// `vertex_offset` is added to the indices (pieces of a VTU file).  The cells of other types are
-/// counted in `skipped` by type name; `kept` receives one flag per cell (1 for a tetrahedron) when
-/// some cell was skipped, and is left empty when every cell is a tetrahedron.  A non-empty list of
-/// cells without any tetrahedron is not a tetrahedral mesh: refused.  `fail(message)` must throw.
+/// Builds the tetrahedra of a VTK cell list from its connectivity, given in order and in chunks:
+/// `end(i)` is the end of cell `i` in the connectivity (cell 0 starts at 0), `types[i]` its VTK
+/// type; `ends == nullptr` stands for the offsets of cells of 4 vertices each (`end(i) = 4(i+1)`,
+/// not stored).  The constructor checks the offsets and the vertex count of every tetrahedron (VTK type
+/// 10), counts the cells of other types in `skipped` by type name, fills `kept` with one flag per
+/// cell (1 for a tetrahedron) when some cell is not a tetrahedron (left empty otherwise) and
+/// reserves the tetrahedra; a non-empty list of cells without any tetrahedron is not a tetrahedral
+/// mesh: refused.  Then `operator()(values, n)` takes the connectivity chunk by chunk, checking
+/// every vertex index of a tetrahedron (in `[0, nv)`, 4 distinct ones); `vertex_offset` is added to
+/// them (pieces of a VTU file).  `fail(message)` must throw.
+template <class Tetrahedron, class Type>
+class Vtk_tetrahedra_builder {
+public:
+  using Index = typename Tetrahedron::value_type;
+  using Fail = std::function<void(const std::string&)>;
+
+  Vtk_tetrahedra_builder(const long long* ends, const Type* types, std::size_t nc, std::size_t nv,
+                         std::size_t vertex_offset, std::vector<Tetrahedron>& tetrahedra,
+                         std::vector<char>& kept, std::map<std::string, std::size_t>& skipped, Fail fail)
+      : ends_(ends), types_(types), nc_(nc), nv_(nv), vertex_offset_(vertex_offset), tetrahedra_(tetrahedra),
+        fail_(std::move(fail)) {
+    kept.clear();
+    std::size_t tets = 0;
+    long long start = 0;
+    for (std::size_t i = 0; i < nc; ++i) {
+      if (end(i) < start) fail_("cell offsets decrease at cell " + std::to_string(i));
+      if (types[i] == 10) {
+        if (end(i) - start != 4)
+          fail_("cell " + std::to_string(i) + " is a tetrahedron with " + std::to_string(end(i) - start) +
+                " vertices instead of 4");
+        ++tets;
+      } else {
+        if (kept.empty()) kept.assign(nc, 1);
+        kept[i] = 0;
+        ++skipped[vtk_cell_type_name(static_cast<long long>(types[i]))];
+      }
+      start = end(i);
+    }
+    if (nc > 0 && tets == 0)
+      fail_("no tetrahedron among the " + std::to_string(nc) + " cells: cell 0 has VTK type " +
+            std::to_string(static_cast<long long>(types[0])) + " (" +
+            vtk_cell_type_name(static_cast<long long>(types[0])) + "), only tetrahedra (type 10) are read");
+    size_ = nc == 0 ? 0 : static_cast<std::size_t>(end(nc - 1));
+    tetrahedra.reserve(tetrahedra.size() + tets);
+  }
+
+  /// the end of cell `i` in the connectivity
+  long long end(std::size_t i) const {
+    return ends_ != nullptr ? ends_[i] : 4 * static_cast<long long>(i + 1);
+  }
+
+  /// the number of connectivity entries the offsets announce
+  std::size_t size() const { return size_; }
+
+  void reserve(std::size_t) {}
+
+  void operator()(const long long* values, std::size_t n) {
+    for (std::size_t j = 0; j < n; ++j, ++pos_) {
+      if (pos_ >= size_)
+        fail_("the connectivity has more than the " + std::to_string(size_) + " entries announced");
+      while (static_cast<unsigned long long>(end(cell_)) <= pos_) ++cell_;
+      if (types_[cell_] != 10) continue;
+      const long long v = values[j];
+      const std::size_t k = pos_ - static_cast<std::size_t>(cell_ == 0 ? 0 : end(cell_ - 1));
+      if (v < 0 || static_cast<unsigned long long>(v) >= nv_)
+        fail_("cell " + std::to_string(cell_) + ": vertex index " + std::to_string(v) +
+              " out of range (0-based, " + std::to_string(nv_) + " points)");
+      const unsigned long long g = static_cast<unsigned long long>(v) + vertex_offset_;
+      if (g > static_cast<unsigned long long>(std::numeric_limits<Index>::max()))
+        fail_("vertex index " + std::to_string(g) + " does not fit in the index type of the mesh");
+      t_[k] = static_cast<Index>(g);
+      if (k == 3) {
+        unsigned long long twice;
+        if (has_repeated_vertex(t_, twice))
+          fail_("cell " + std::to_string(cell_) + ": vertex index " + std::to_string(twice - vertex_offset_) +
+                " listed twice");
+        tetrahedra_.push_back(t_);
+      }
+    }
+  }
+
+  /// Checks that the whole connectivity was given.
+  void finish() {
+    if (pos_ != size_)
+      fail_("the cell offsets end at " + std::to_string(size_) + " but the connectivity has " +
+            std::to_string(pos_) + " entries");
+  }
+
+private:
+  const long long* ends_;
+  const Type* types_;
+  std::size_t nc_, nv_, vertex_offset_;
+  std::vector<Tetrahedron>& tetrahedra_;
+  Fail fail_;
+  std::size_t size_ = 0, pos_ = 0, cell_ = 0;
+  Tetrahedron t_{};
+};
+
+/// The tetrahedra of cells given by `starts` (cell `i` is `connectivity[starts[i] .. starts[i+1]-1]`,
+/// `starts.size()` is the number of cells + 1), with the checks and outputs of
+/// `Vtk_tetrahedra_builder`.  `fail(message)` must throw.
 template <class Tetrahedron, class Fail>
 void vtk_cells_to_tetrahedra(const std::vector<long long>& starts, const std::vector<long long>& connectivity,
                              const std::vector<long long>& types, std::size_t nv, std::size_t vertex_offset,
                              std::vector<Tetrahedron>& tetrahedra, std::vector<char>& kept,
                              std::map<std::string, std::size_t>& skipped, const Fail& fail) {
-  using Index = typename Tetrahedron::value_type;
   const std::size_t nc = starts.empty() ? 0 : starts.size() - 1;
   kept.clear();
   if (types.size() != nc)
@@ -119,46 +214,12 @@ void vtk_cells_to_tetrahedra(const std::vector<long long>& starts, const std::ve
   if (!starts.empty() && static_cast<unsigned long long>(starts.back()) != connectivity.size())
     fail("the cell offsets end at " + std::to_string(starts.back()) + " but the connectivity has " +
          std::to_string(connectivity.size()) + " entries");
-  std::size_t first_other = nc;
-  for (std::size_t i = 0; i < nc; ++i) {
-    if (starts[i + 1] < starts[i]) fail("cell offsets decrease at cell " + std::to_string(i));
-    if (types[i] != 10) {
-      if (first_other == nc) {
-        first_other = i;
-        kept.assign(nc, 1);
-      }
-      kept[i] = 0;
-      ++skipped[vtk_cell_type_name(types[i])];
-      continue;
-    }
-    if (starts[i + 1] - starts[i] != 4)
-      fail("cell " + std::to_string(i) + " is a tetrahedron with " +
-           std::to_string(starts[i + 1] - starts[i]) + " vertices instead of 4");
-    Tetrahedron t;
-    for (int k = 0; k < 4; ++k) {
-      const long long v = connectivity[static_cast<std::size_t>(starts[i]) + k];
-      if (v < 0 || static_cast<unsigned long long>(v) >= nv)
-        fail("cell " + std::to_string(i) + ": vertex index " + std::to_string(v) +
-             " out of range (0-based, " + std::to_string(nv) + " points)");
-      const unsigned long long g = static_cast<unsigned long long>(v) + vertex_offset;
-      if (g > static_cast<unsigned long long>(std::numeric_limits<Index>::max()))
-        fail("vertex index " + std::to_string(g) + " does not fit in the index type of the mesh");
-      t[k] = static_cast<Index>(g);
-    }
-    unsigned long long twice;
-    if (has_repeated_vertex(t, twice))
-      fail("cell " + std::to_string(i) + ": vertex index " + std::to_string(twice - vertex_offset) +
-           " listed twice");
-    tetrahedra.push_back(t);
-  }
-  if (nc > 0 && first_other == 0 && kept.size() == nc) {
-    bool any = false;
-    for (char k : kept) any = any || k;
-    if (!any)
-      fail("no tetrahedron among the " + std::to_string(nc) + " cells: cell 0 has VTK type " +
-           std::to_string(types[0]) + " (" + vtk_cell_type_name(types[0]) +
-           "), only tetrahedra (type 10) are read");
-  }
+  if (nc == 0) return;
+  Vtk_tetrahedra_builder<Tetrahedron, long long> b(starts.data() + 1, types.data(), nc, nv, vertex_offset,
+                                                   tetrahedra, kept, skipped,
+                                                   [&](const std::string& m) { fail(m); });
+  b(connectivity.data(), connectivity.size());
+  b.finish();
 }
 
 /// Keeps the values of the cells flagged in `kept` (all of them when `kept` is empty).

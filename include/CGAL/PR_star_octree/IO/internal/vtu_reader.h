@@ -152,6 +152,24 @@ public:
   /// Reads the `count` values of a DataArray into `out` (`double` or `long long`).
   template <class T>
   void read(const Xml_element& e, std::size_t count, std::vector<T>& out) const {
+    out.clear();
+    Vector_sink<T> sink{out};
+    read_into<T>(e, count, sink);
+  }
+
+  /// Appends to a vector.
+  template <class T>
+  struct Vector_sink {
+    std::vector<T>& out;
+    void reserve(std::size_t n) { out.reserve(out.size() + n); }
+    void operator()(const T* v, std::size_t n) { out.insert(out.end(), v, v + n); }
+  };
+
+  /// Reads the `count` values of a DataArray as `T` (`double` or `long long`) and hands them to
+  /// `sink` in order, in chunks: `sink.reserve(count)` once the data were found to hold them, then
+  /// `sink(values, n)` for each chunk.
+  template <class T, class Sink>
+  void read_into(const Xml_element& e, std::size_t count, Sink& sink) const {
     const std::string* type = e.attribute("type");
     if (type == nullptr) fail(e, describe(e) + " without a type attribute");
     std::size_t size = 0;
@@ -161,9 +179,11 @@ public:
       fail(e, describe(e) + " has type " + *type + " but must have an integer type");
     const std::string* format = e.attribute("format");
     const std::string fmt = format ? *format : std::string("ascii");
-    out.clear();
     if (fmt == "ascii") {
+      std::vector<T> out;
       read_ascii(e, count, out);
+      sink.reserve(count);
+      sink(out.data(), out.size());
     } else if (fmt == "binary" || fmt == "appended") {
       if (!compressor_available(compressor_))
         fail(e, describe(e) + ": compressed data (compressor=\"" + compressor_name_ + "\") cannot be read: " +
@@ -172,12 +192,12 @@ public:
         if (e.text_parts.size() > 1) {
           std::string storage;
           Vtu_byte_source src(doc_.element_text(e, storage), e.text_parts.front().first);
-          read_binary(e, count, size, kind, *type, src, out);
+          read_binary<T>(e, count, size, kind, *type, src, sink);
         } else {
           const std::size_t begin = e.text_parts.empty() ? 0 : e.text_parts[0].first;
           const std::size_t end = e.text_parts.empty() ? 0 : e.text_parts[0].second;
           Vtu_byte_source src(doc_.text().substr(begin, end - begin), begin);
-          read_binary(e, count, size, kind, *type, src, out);
+          read_binary<T>(e, count, size, kind, *type, src, sink);
         }
       } else {
         const std::string* off = e.attribute("offset");
@@ -195,10 +215,10 @@ public:
         const std::size_t file_offset = static_cast<std::size_t>(block.data() - doc_.text().data());
         if (appended_base64_) {
           Vtu_byte_source src(block, file_offset);
-          read_binary(e, count, size, kind, *type, src, out);
+          read_binary<T>(e, count, size, kind, *type, src, sink);
         } else {
           Vtu_byte_source src(block.data(), block.size(), file_offset);
-          read_binary(e, count, size, kind, *type, src, out);
+          read_binary<T>(e, count, size, kind, *type, src, sink);
         }
       }
     } else {
@@ -339,39 +359,57 @@ private:
     }
   };
 
-  template <class T>
-  void convert(const unsigned char* buf, std::size_t chunk, std::size_t size, Kind kind, std::size_t done,
-               const Xml_element& e, std::vector<T>& out) const {
-    for (std::size_t i = 0; i < chunk; ++i) {
-      const std::uint64_t bits = load(buf + i * size, size);
-      const std::size_t index = done + i;
-      if constexpr (std::is_integral<T>::value) {
-        if (kind == UNSIGNED) {
-          if (bits > static_cast<std::uint64_t>(std::numeric_limits<long long>::max()))
-            fail(e, describe(e) + ": value " + std::to_string(index) + " is too large");
-          out.push_back(static_cast<long long>(bits));
-        } else {
-          out.push_back(sign_extend(bits, size));
-        }
-      } else {
-        double v;
-        if (kind == FLOAT) {
-          if (size == 4) {
-            const std::uint32_t b32 = static_cast<std::uint32_t>(bits);
-            float f;
-            std::memcpy(&f, &b32, 4);
-            v = f;
-          } else {
-            std::memcpy(&v, &bits, 8);
-          }
-          if (!std::isfinite(v)) fail(e, describe(e) + ": value " + std::to_string(index) + " is not finite");
-        } else if (kind == UNSIGNED) {
-          v = static_cast<double>(bits);
-        } else {
-          v = static_cast<double>(sign_extend(bits, size));
-        }
-        out.push_back(v);
+  /// `n` values stored as the unsigned integer type `U` of the size of the file's type, to `T`.
+  template <class U, class T>
+  void convert_as(const unsigned char* buf, std::size_t n, Kind kind, std::size_t done, const Xml_element& e,
+                  T* dst) const {
+    for (std::size_t i = 0; i < n; ++i) {
+      U u;
+      std::memcpy(&u, buf + i * sizeof(U), sizeof(U));
+      if (swap_) {
+        unsigned char b[sizeof(U)];
+        std::memcpy(b, &u, sizeof(U));
+        for (std::size_t k = 0; k < sizeof(U) / 2; ++k) std::swap(b[k], b[sizeof(U) - 1 - k]);
+        std::memcpy(&u, b, sizeof(U));
       }
+      if (kind == FLOAT) {
+        if constexpr (sizeof(U) == 4 || sizeof(U) == 8) {
+          using F = std::conditional_t<sizeof(U) == 4, float, double>;
+          F f;
+          std::memcpy(&f, &u, sizeof(U));
+          dst[i] = static_cast<T>(f);
+        }
+      } else if (kind == SIGNED) {
+        dst[i] = static_cast<T>(static_cast<std::make_signed_t<U>>(u));
+      } else {
+        if (sizeof(U) == 8 && u > static_cast<U>(std::numeric_limits<long long>::max()))
+          fail(e, describe(e) + ": value " + std::to_string(done + i) + " is too large");
+        dst[i] = static_cast<T>(u);
+      }
+    }
+    if constexpr (std::is_floating_point<T>::value) {
+      if (kind == FLOAT)
+        for (std::size_t i = 0; i < n; ++i)
+          if (!std::isfinite(dst[i]))
+            fail(e, describe(e) + ": value " + std::to_string(done + i) + " is not finite");
+    }
+  }
+
+  template <class T>
+  void convert(const unsigned char* buf, std::size_t n, std::size_t size, Kind kind, std::size_t done,
+               const Xml_element& e, T* dst) const {
+    switch (size) {
+    case 1:
+      convert_as<std::uint8_t>(buf, n, kind, done, e, dst);
+      break;
+    case 2:
+      convert_as<std::uint16_t>(buf, n, kind, done, e, dst);
+      break;
+    case 4:
+      convert_as<std::uint32_t>(buf, n, kind, done, e, dst);
+      break;
+    default:
+      convert_as<std::uint64_t>(buf, n, kind, done, e, dst);
     }
   }
 
@@ -379,9 +417,9 @@ private:
     return " (at byte " + std::to_string(src.file_offset()) + " of the file)";
   }
 
-  template <class T>
+  template <class T, class Sink>
   void read_binary(const Xml_element& e, std::size_t count, std::size_t size, Kind kind,
-                   const std::string& type, Vtu_byte_source& src, std::vector<T>& out) const {
+                   const std::string& type, Vtu_byte_source& src, Sink& sink) const {
     const auto word = [&](const char* what) {
       unsigned char h[8];
       const std::string where = at(src);
@@ -455,24 +493,18 @@ private:
         fail(e, describe(e) + ": " + blocks.error);
       }
     };
-    out.reserve(count);
-    unsigned char buf[1 << 16];
+    sink.reserve(count);
+    constexpr std::size_t chunk_values = 8192;
+    std::vector<unsigned char> buf(chunk_values * size);
+    std::vector<T> values(chunk_values);
     std::size_t done = 0;
     while (done < count) {
-      const std::size_t chunk = std::min<std::size_t>(count - done, sizeof(buf) / size);
-      get(buf, chunk * size);
-      convert(buf, chunk, size, kind, done, e, out);
+      const std::size_t chunk = std::min<std::size_t>(count - done, chunk_values);
+      get(buf.data(), chunk * size);
+      convert(buf.data(), chunk, size, kind, done, e, values.data());
+      sink(values.data(), chunk);
       done += chunk;
     }
-  }
-
-  static long long sign_extend(std::uint64_t bits, std::size_t size) {
-    if (size == 8) return static_cast<long long>(bits);
-    const std::uint64_t sign = std::uint64_t(1) << (8 * size - 1);
-    const std::uint64_t mask = (std::uint64_t(1) << (8 * size)) - 1;
-    bits &= mask;
-    return (bits & sign) ? static_cast<long long>(bits) - static_cast<long long>(mask) - 1
-                         : static_cast<long long>(bits);
   }
 
   const Xml_document& doc_;
@@ -554,11 +586,22 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
       if (da.size() != 1)
         fail(*points, "<Points> must hold one DataArray, found " + std::to_string(da.size()));
       if (components(*da[0]) != 3) fail(*da[0], "the points DataArray must have NumberOfComponents=\"3\"");
-      std::vector<double> xyz;
-      arrays.read(*da[0], 3 * nv, xyz);
-      mesh.points.reserve(mesh.points.size() + nv);
-      for (std::size_t i = 0; i < nv; ++i)
-        mesh.points.push_back(Point_3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]));
+      struct Point_sink { // straight into the points, without an array of coordinates
+        std::vector<Point_3>& points;
+        double c[3];
+        int k;
+        void reserve(std::size_t n) { points.reserve(points.size() + n / 3); }
+        void operator()(const double* v, std::size_t n) {
+          for (std::size_t i = 0; i < n; ++i) {
+            c[k++] = v[i];
+            if (k == 3) {
+              points.emplace_back(c[0], c[1], c[2]);
+              k = 0;
+            }
+          }
+        }
+      } point_sink{mesh.points, {0, 0, 0}, 0};
+      arrays.read_into<double>(*da[0], 3 * nv, point_sink);
     }
 
     // cells
@@ -580,23 +623,49 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
       if (offs == nullptr) fail(*cells, "<Cells> without the DataArray 'offsets'");
       if (types == nullptr) fail(*cells, "<Cells> without the DataArray 'types'");
       if (conn == nullptr) fail(*cells, "<Cells> without the DataArray 'connectivity'");
-      std::vector<long long> offsets, type_values, connectivity;
-      arrays.read(*types, nc, type_values);
-      arrays.read(*offs, nc, offsets);
+      std::vector<long long> offsets;
+      std::vector<std::uint8_t> type_values; // VTK cell types are below 256 (others: "unknown cell type")
+      struct Type_sink {
+        std::vector<std::uint8_t>& out;
+        void reserve(std::size_t n) { out.reserve(n); }
+        void operator()(const long long* v, std::size_t n) {
+          for (std::size_t i = 0; i < n; ++i)
+            out.push_back(v[i] >= 0 && v[i] < 255 ? std::uint8_t(v[i]) : 255);
+        }
+      } type_sink{type_values};
+      arrays.read_into<long long>(*types, nc, type_sink);
+      // offsets 4, 8, 12... (only tetrahedra) are not stored
+      struct Offset_sink {
+        std::vector<long long>& out;
+        std::size_t count, i;
+        bool regular;
+        void reserve(std::size_t n) { count = n; }
+        void operator()(const long long* v, std::size_t n) {
+          for (std::size_t j = 0; j < n; ++j, ++i) {
+            if (regular && v[j] == 4 * static_cast<long long>(i + 1)) continue;
+            if (regular) {
+              regular = false;
+              out.reserve(count);
+              for (std::size_t k = 0; k < i; ++k) out.push_back(4 * static_cast<long long>(k + 1));
+            }
+            out.push_back(v[j]);
+          }
+        }
+      } offset_sink{offsets, 0, 0, true};
+      arrays.read_into<long long>(*offs, nc, offset_sink);
       // the connectivity size is the last offset (checked to be sensible against the text size)
-      const long long last = nc == 0 ? 0 : offsets.back();
+      const long long last = nc == 0               ? 0
+                             : offset_sink.regular ? 4 * static_cast<long long>(nc)
+                                                   : offsets.back();
       if (last < 0 ||
           static_cast<unsigned long long>(last) / max_compression_ratio(arrays.compressor()) > text.size())
         fail(*offs, "invalid last cell offset " + std::to_string(last));
-      arrays.read(*conn, static_cast<std::size_t>(last), connectivity);
-      std::vector<long long> starts;
-      starts.reserve(nc + 1);
-      starts.push_back(0);
-      starts.insert(starts.end(), offsets.begin(), offsets.end());
-      mesh.tetrahedra.reserve(mesh.tetrahedra.size() + nc);
-      vtk_cells_to_tetrahedra(starts, connectivity, type_values, nv, vertex_offset, mesh.tetrahedra, kept,
-                              mesh.skipped_cells,
-                              [&](const std::string& m) { fail(*cells, "<Cells>: " + m); });
+      const auto cell_fail = [&](const std::string& m) { fail(*cells, "<Cells>: " + m); };
+      Vtk_tetrahedra_builder<typename Mesh::Tetrahedron, std::uint8_t> builder(
+          offset_sink.regular ? nullptr : offsets.data(), type_values.data(), nc, nv, vertex_offset,
+          mesh.tetrahedra, kept, mesh.skipped_cells, cell_fail);
+      arrays.read_into<long long>(*conn, static_cast<std::size_t>(last), builder);
+      builder.finish();
     }
 
     // point data
@@ -631,14 +700,36 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
         if (components(*a) != 1) continue;
         const std::string* n = a->attribute("Name");
         const std::string array_name = n ? *n : "cell_data_" + std::to_string(kc);
+        if (!has_labels && is_vtk_label_array_name(array_name)) {
+          // straight into ints; an array with a value that is not an int is cell data after all
+          struct Label_sink {
+            std::vector<int>& out;
+            const std::vector<char>& kept;
+            std::size_t i;
+            bool integers;
+            void reserve(std::size_t n) { out.reserve(out.size() + n); }
+            void operator()(const double* v, std::size_t n) {
+              for (std::size_t j = 0; j < n; ++j, ++i) {
+                if (!(v[j] == std::floor(v[j]) && v[j] >= double(std::numeric_limits<int>::min()) &&
+                      v[j] <= double(std::numeric_limits<int>::max())))
+                  integers = false;
+                else if (kept.empty() || kept[i])
+                  out.push_back(static_cast<int>(v[j]));
+              }
+            }
+          };
+          const std::size_t before = mesh.tetrahedron_labels.size();
+          Label_sink label_sink{mesh.tetrahedron_labels, kept, 0, true};
+          arrays.read_into<double>(*a, nc, label_sink);
+          if (label_sink.integers) {
+            has_labels = true;
+            continue;
+          }
+          mesh.tetrahedron_labels.resize(before);
+        }
         std::vector<double> values;
         arrays.read(*a, nc, values);
         vtk_keep_cells(values, kept);
-        if (!has_labels && is_vtk_label_array_name(array_name) && vtk_integer_valued(values)) {
-          vtk_labels_to_int(values, mesh.tetrahedron_labels, [&](const std::string& m) { fail(*a, m); });
-          has_labels = true;
-          continue;
-        }
         if (pi == 0) {
           for (const auto& existing : mesh.cell_data)
             if (existing.name == array_name) fail(*a, "duplicate cell data array '" + array_name + "'");
