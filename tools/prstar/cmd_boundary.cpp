@@ -33,7 +33,7 @@ int run_boundary(const Options& o) {
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
   const Octree tree(CGAL::PR_star_octree::make_input(mesh),
                     params::bucket_size(kv).maximum_depth(o.max_depth()));
-  progress.phase("classifying the vertices leaf by leaf");
+  progress.phase("classifying the vertices");
   std::vector<Vertex_type> types(mesh.points.size(), Vertex_type::UNREFERENCED); // the user's numbering
   const CGAL::PR_star_octree::Boundary_counts b = CGAL::PR_star_octree::compute_boundary(
       tree, CGAL::make_property_map(types), params::progress(progress.callback()));
@@ -93,7 +93,7 @@ Command boundary_command() {
       .description(
           R"(Classifies every vertex of MESH as interior, boundary or non-manifold, leaf by leaf (paper
 Section 7: 2|e| != 3|t| in the vertex link, plus a check that the link is a sphere or a disc).)")
-      .kv("50")
+      .kv()
       .max_depth()
       .output("OUT.vtu", ".vtu",
               "write the mesh with the point array `boundary` (0 interior, 1 boundary,\n"

@@ -62,7 +62,7 @@ int run_curvature(const Options& o) {
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
   const Octree tree(CGAL::PR_star_octree::make_input(mesh),
                     params::bucket_size(kv).maximum_depth(o.max_depth()));
-  progress.phase("computing the distortion leaf by leaf");
+  progress.phase("computing the distortion");
   std::vector<CGAL::PR_star_octree::Vertex_curvature> curv(mesh.points.size()); // the user's numbering
   CGAL::PR_star_octree::compute_curvature(tree, CGAL::make_property_map(values),
                                           CGAL::make_property_map(curv),
@@ -166,7 +166,7 @@ concentrated curvature of the domain ((4 pi or 2 pi) minus the sum of the 3D sol
 Non-manifold vertices get NaN.)")
       .option("--field", "NAME|x|y|z",
               "a point-data array of MESH (default: its first one), or x, y, z for a coordinate")
-      .kv("50")
+      .kv()
       .max_depth()
       .output("OUT.vtu", ".vtu",
               "write the mesh with point arrays `boundary`, `distortion`, `domain_curvature`\n"

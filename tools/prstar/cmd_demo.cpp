@@ -21,11 +21,11 @@ int run_demo(const Options& o) {
   Generate_options opt;
   opt.shape = "sphere";
   opt.cell_size = demo_cell_size(o);
+  // The mesher reports its own steps on a terminal (as in `prstar generate`): no bar of ours
+  // meanwhile, which would redraw over its lines.
   opt.quiet = !o.show_progress();
   Progress_bar progress(o.show_progress());
-  progress.phase("meshing the unit ball with CGAL Mesh_3 (cell size " + fixed(opt.cell_size, 3) + ")");
   const Mesh mesh = generate_mesh(opt);
-  progress.finish();
   report_statistics(mesh, "built-in unit ball (CGAL Mesh_3, cell size " + fixed(opt.cell_size, 3) + ")",
                     o.kvs(), o.max_depth(), o.json(), progress);
   return exit_success;
@@ -41,7 +41,7 @@ Command demo_command() {
           R"(Meshes the unit ball with CGAL Mesh_3 (no input file needed) and prints the statistics of its
 PR-star octree for several bucket thresholds k_v, as `prstar stats` does.)")
       .option("--cell-size", "S", "target tetrahedron size of the ball (default 0.04, at least 0.005)")
-      .kv("10,20,50,100,200,inf", true)
+      .kv_list("10,20,50,100,200,inf")
       .max_depth()
       .json_keys("(an array of objects for a list of k_v); the keys of `prstar stats --json`")
       .check(demo_cell_size)

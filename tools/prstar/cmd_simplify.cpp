@@ -105,7 +105,7 @@ removes nothing.  Vertices never move; point data (the scalar field) is kept.  W
 octree has one leaf: the global algorithm.)")
       .option("--target", "F", "stop once this fraction of the tetrahedra is removed (0 < F < 1)")
       .option("--max-length", "L", "collapse only edges shorter than L (with --target: both)")
-      .kv("50")
+      .kv()
       .output("OUT", "", "write the simplified mesh to OUT", true)
       .json_keys("keys: input_tetrahedra, output_tetrahedra, removed_tetrahedra, input_vertices,\n"
                  "output_vertices, kv, rounds, max_queue, seconds,\n"

@@ -67,7 +67,7 @@ void report_statistics(const Mesh& mesh, const std::string& name, const std::vec
     progress.finish();
     stats.push_back(tree.statistics());
     if (stats.size() == 1) { // the counts do not depend on k_v: compute them once, locally
-      progress.phase("counting edges and triangles leaf by leaf");
+      progress.phase("counting edges and triangles");
       counts = CGAL::PR_star_octree::count_simplices(tree, params::progress(progress.callback()));
       progress.finish();
     }
@@ -140,7 +140,7 @@ Command stats_command() {
 k_v, |N|, |N_leaf|, depth, chi, the cost model of the PR-star octree and of the extended IA data
 structure (in multiples of |V|), and the bytes really used; also the numbers of edges and
 triangles and the Euler characteristic, counted leaf by leaf.)")
-      .kv("50", true)
+      .kv_list()
       .max_depth()
       .json_keys("(an array of objects for a list of k_v); the keys are listed in the README")
       .run(run_stats);

@@ -29,7 +29,7 @@ int run_validate(const Options& o) {
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
   const Octree tree(CGAL::PR_star_octree::make_input(mesh.points, mesh.tetrahedra),
                     params::bucket_size(kv).maximum_depth(o.max_depth()));
-  progress.phase("checking the mesh leaf by leaf");
+  progress.phase("checking the mesh");
   const auto r = CGAL::PR_star_octree::check_validity(tree, params::progress(progress.callback()));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
@@ -80,7 +80,7 @@ boundary components (boundary triangles connected through edges).
 
 exit status: 0 the mesh is valid, 3 the mesh was checked and is not valid, 1 an error (missing,
 unreadable or malformed file), 2 a usage error.)")
-      .kv("50")
+      .kv()
       .max_depth()
       .json_keys(
           "keys: valid, tetrahedra, inverted, degenerate, nonmanifold_triangles,\n"

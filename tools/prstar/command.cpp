@@ -26,9 +26,11 @@ namespace {
 using Octree = CGAL::PR_star_octree_3<>;
 
 // The help texts of the common options: the only place they are written.
-const char* const help_kv = "bucket threshold k_v of the octree, a positive integer or inf (one leaf)";
-const char* const help_kv_list = ";\na comma-separated list gives one row per value";
-const char* const help_max_depth = "depth bound of the octree, 1 to 64 (default 32)";
+const char* const help_kv = "bucket threshold k_v of the octree: a positive integer, or inf (one leaf)";
+const char* const help_kv_list = "bucket thresholds k_v of the octree: positive integers or inf (one leaf),\n"
+                                 "comma-separated, one row each";
+const std::string help_max_depth =
+    "depth bound of the octree, 1 to 64 (default " + std::to_string(Octree::default_max_depth) + ")";
 const char* const help_force = "overwrite an existing output file (never the input)";
 const char* const help_json = "print the result as one JSON object on stdout, and no progress";
 const char* const help_quiet = "no progress on stderr";
@@ -128,10 +130,16 @@ Command& Command::input(std::string name) {
   input_ = std::move(name);
   return *this;
 }
-Command& Command::kv(std::string default_value, bool list) {
+Command& Command::kv(std::string default_value) {
   has_kv_ = true;
-  kv_list_ = list;
-  kv_default_ = std::move(default_value);
+  kv_list_ = false;
+  kv_default_ =
+      default_value.empty() ? bucket_size_string(Octree::default_bucket_size) : std::move(default_value);
+  return *this;
+}
+Command& Command::kv_list(std::string default_value) {
+  kv(std::move(default_value));
+  kv_list_ = true;
   return *this;
 }
 Command& Command::max_depth() {
@@ -193,7 +201,7 @@ std::string Command::help() const {
     lines.push_back({d.name + (d.value_name.empty() ? "" : " " + d.value_name), d.help});
   if (has_kv_)
     lines.push_back({kv_list_ ? "--kv N|inf[,N...]" : "--kv N|inf",
-                     help_kv + std::string(";\ndefault ") + kv_default_ + (kv_list_ ? help_kv_list : "")});
+                     (kv_list_ ? help_kv_list : help_kv) + std::string("\n(default ") + kv_default_ + ")"});
   if (has_max_depth_) lines.push_back({"--max-depth D", help_max_depth});
   for (const Output_decl& o : outputs_)
     lines.push_back({(o.option.empty() ? "-o, --output" : o.option) + " " + o.value_name,

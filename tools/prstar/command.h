@@ -56,8 +56,10 @@ public:
 
   /// One positional argument, a mesh file that is read and never overwritten.
   Command& input(std::string name = "MESH");
-  /// --kv: one bucket threshold (`list` false) or a comma-separated list of them.
-  Command& kv(std::string default_value, bool list = false);
+  /// --kv: one bucket threshold (default: the library's default k_v).
+  Command& kv(std::string default_value = "");
+  /// --kv: a comma-separated list of bucket thresholds (default: the library's default k_v).
+  Command& kv_list(std::string default_value = "");
   /// --max-depth: the depth bound of the octree.
   Command& max_depth();
   /// -o/--output (`option` empty) or another output option (e.g. "--csv"): a file written by

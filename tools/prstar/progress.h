@@ -42,9 +42,13 @@ public:
   /// time until `update()` gives a fraction.
   void phase(const std::string& name);
   /// `done` of `total` units of the current phase are done (leaves, bytes...).
+  /// Calls from several threads (the library's parallel leaves) may arrive out of order: the bar
+  /// keeps the largest `done`.
   void update(std::size_t done, std::size_t total) {
     total_.store(total, std::memory_order_relaxed);
-    done_.store(done, std::memory_order_relaxed);
+    std::size_t seen = done_.load(std::memory_order_relaxed);
+    while (seen < done && !done_.compare_exchange_weak(seen, done, std::memory_order_relaxed)) {
+    }
   }
   /// A copyable `f(done, total)` that calls `update()`; valid while this bar lives.
   std::function<void(std::size_t, std::size_t)> callback() {
