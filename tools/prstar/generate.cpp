@@ -7,6 +7,7 @@
 
 #include <CGAL/PR_star_octree/Mesh_complex_3_input.h>
 
+#include <CGAL/Mesh_3/Worksharing_data_structures.h> // CGAL 5.5: needed before exude_mesh_3.h when TBB is linked
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
@@ -52,24 +53,33 @@ using Output_mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
 // Implicit shapes: negative inside.  Only the sign matters to Mesh_3.
 // ---------------------------------------------------------------------------------------------
 
-double sq(double x) { return x * x; }
+double sq(double x) {
+  return x * x;
+}
 
 struct Implicit_shape {
   const char* name;
   const char* description;
   double (*function)(const Point&);
-  Point center;               // of the bounding sphere
-  double radius;              // of the bounding sphere, which strictly contains the shape
-  std::vector<Point> seeds;   // one point inside each connected component
+  Point center;             // of the bounding sphere
+  double radius;            // of the bounding sphere, which strictly contains the shape
+  std::vector<Point> seeds; // one point inside each connected component
 };
 
 const std::vector<Implicit_shape>& shapes() {
   static const std::vector<Implicit_shape> all = {
-      {"sphere", "unit ball centred at the origin",
-       [](const Point& p) { return sq(p.x()) + sq(p.y()) + sq(p.z()) - 1.; }, Point(0, 0, 0), 1.5, {Point(0, 0, 0)}},
-      {"torus", "torus around the z axis, radii R = 1 and r = 0.4",
-       [](const Point& p) { return sq(std::sqrt(sq(p.x()) + sq(p.y())) - 1.) + sq(p.z()) - sq(0.4); }, Point(0, 0, 0),
-       1.6, {Point(1, 0, 0), Point(-1, 0, 0)}},
+      {"sphere",
+       "unit ball centred at the origin",
+       [](const Point& p) { return sq(p.x()) + sq(p.y()) + sq(p.z()) - 1.; },
+       Point(0, 0, 0),
+       1.5,
+       {Point(0, 0, 0)}},
+      {"torus",
+       "torus around the z axis, radii R = 1 and r = 0.4",
+       [](const Point& p) { return sq(std::sqrt(sq(p.x()) + sq(p.y())) - 1.) + sq(p.z()) - sq(0.4); },
+       Point(0, 0, 0),
+       1.6,
+       {Point(1, 0, 0), Point(-1, 0, 0)}},
       {"balls",
        "two overlapping balls (centres (-0.5,0,0), (0.4,0,0), radii 0.6, 0.5) and a separate ball "
        "(centre (0,1.2,0), radius 0.35): two connected components",
@@ -79,18 +89,29 @@ const std::vector<Implicit_shape>& shapes() {
          const double c = sq(p.x()) + sq(p.y() - 1.2) + sq(p.z()) - sq(0.35);
          return (std::min)(a, (std::min)(b, c));
        },
-       Point(0, 0.3, 0), 2., {Point(-0.5, 0, 0), Point(0.4, 0, 0), Point(0, 1.2, 0)}},
-      {"cube", "cube [-1,1]^3 (sharp edges are not protected, so they come out rounded)",
+       Point(0, 0.3, 0),
+       2.,
+       {Point(-0.5, 0, 0), Point(0.4, 0, 0), Point(0, 1.2, 0)}},
+      {"cube",
+       "cube [-1,1]^3 (sharp edges are not protected, so they come out rounded)",
        [](const Point& p) {
          return (std::max)(std::abs(p.x()), (std::max)(std::abs(p.y()), std::abs(p.z()))) - 1.;
        },
-       Point(0, 0, 0), 2., {Point(0, 0, 0)}},
-      {"ellipsoid", "ellipsoid centred at the origin, semi-axes 1, 0.6, 0.4",
-       [](const Point& p) { return sq(p.x()) + sq(p.y() / 0.6) + sq(p.z() / 0.4) - 1.; }, Point(0, 0, 0), 1.2,
+       Point(0, 0, 0),
+       2.,
        {Point(0, 0, 0)}},
-      {"cylinder", "cylinder around the z axis, radius 0.5, z in [-1,1] (rims not protected)",
+      {"ellipsoid",
+       "ellipsoid centred at the origin, semi-axes 1, 0.6, 0.4",
+       [](const Point& p) { return sq(p.x()) + sq(p.y() / 0.6) + sq(p.z() / 0.4) - 1.; },
+       Point(0, 0, 0),
+       1.2,
+       {Point(0, 0, 0)}},
+      {"cylinder",
+       "cylinder around the z axis, radius 0.5, z in [-1,1] (rims not protected)",
        [](const Point& p) { return (std::max)(sq(p.x()) + sq(p.y()) - sq(0.5), std::abs(p.z()) - 1.); },
-       Point(0, 0, 0), 1.5, {Point(0, 0, 0)}},
+       Point(0, 0, 0),
+       1.5,
+       {Point(0, 0, 0)}},
   };
   return all;
 }
@@ -127,7 +148,8 @@ Sizes check_options(const Generate_options& o) {
   if (!(o.cell_radius_edge_ratio >= 2) || !finite(o.cell_radius_edge_ratio))
     throw std::runtime_error("cell radius-edge ratio must be >= 2 (Mesh_3 may not terminate below 2)");
   return {o.cell_size, o.facet_size > 0 ? o.facet_size : o.cell_size,
-          o.facet_distance > 0 ? o.facet_distance : o.cell_size / 10, o.facet_angle, o.cell_radius_edge_ratio};
+          o.facet_distance > 0 ? o.facet_distance : o.cell_size / 10, o.facet_angle,
+          o.cell_radius_edge_ratio};
 }
 
 class Progress {
@@ -211,7 +233,7 @@ Prepared_domain prepare_domain(const Generate_options& o) {
     d.domain = std::make_unique<Generate_domain>(Generate_domain::create_implicit_mesh_domain(
         s.function, K::Sphere_3(s.center, sq(s.radius)),
         CGAL::parameters::relative_error_bound = relative_error_bound));
-    const double far = 4 * s.radius;  // from any seed, beyond the bounding sphere
+    const double far = 4 * s.radius; // from any seed, beyond the bounding sphere
     for (const Point& seed : s.seeds)
       for (int axis = 0; axis < 3; ++axis)
         for (double sign : {-1., 1.}) {
@@ -273,10 +295,12 @@ void insert_initial_points(Generate_c3t3& c3t3, const Prepared_domain& d) {
 }
 
 // Runs Mesh_3: the full volume mesh, or (surface_only) the restricted Delaunay surface only.
-Generate_c3t3 run_mesh_3(const Generate_options& o, const Sizes& s, bool surface_only, const Progress& progress) {
+Generate_c3t3 run_mesh_3(const Generate_options& o, const Sizes& s, bool surface_only,
+                         const Progress& progress) {
   namespace P = CGAL::parameters;
   Prepared_domain d = prepare_domain(o);
-  progress.say(std::string(surface_only ? "meshing the surface of " : "meshing ") + d.what + " with Mesh_3 ...");
+  progress.say(std::string(surface_only ? "meshing the surface of " : "meshing ") + d.what +
+               " with Mesh_3 ...");
   Generate_c3t3 c3t3;
   insert_initial_points(c3t3, d);
   if (surface_only) {
@@ -288,7 +312,8 @@ Generate_c3t3 run_mesh_3(const Generate_options& o, const Sizes& s, bool surface
                             P::facet_distance = s.facet_distance,
                             P::cell_radius_edge_ratio = s.cell_radius_edge_ratio, P::cell_size = s.cell_size);
     CGAL::refine_mesh_3(c3t3, *d.domain, criteria, P::no_reset_c3t3(), P::no_perturb(), P::no_exude());
-    progress.say("refined: " + std::to_string(c3t3.number_of_cells_in_complex()) + " tetrahedra, " + seconds(progress));
+    progress.say("refined: " + std::to_string(c3t3.number_of_cells_in_complex()) + " tetrahedra, " +
+                 seconds(progress));
     // Sliver removal with time_limit = 0 (no time limit), so that the result does not depend on the
     // machine's speed (CGAL's default limit is the refinement time), and explicit bounds on the
     // minimum dihedral angle, so that it stays cheap: perturbation up to 10 degrees (its default,
@@ -301,7 +326,8 @@ Generate_c3t3 run_mesh_3(const Generate_options& o, const Sizes& s, bool surface
     CGAL::exude_mesh_3(c3t3, P::time_limit = 0., P::sliver_bound = 15.);
     progress.say("exuded, " + seconds(progress));
     if (c3t3.number_of_cells_in_complex() == 0)
-      throw std::runtime_error("Mesh_3 produced no tetrahedra for " + d.what + " (is the cell size too large?)");
+      throw std::runtime_error("Mesh_3 produced no tetrahedra for " + d.what +
+                               " (is the cell size too large?)");
   }
   return c3t3;
 }
@@ -351,19 +377,26 @@ Triangle_soup surface_of(const Surface& sm) {
 
 std::string tetgen_error(int code) {
   switch (code) {
-  case 1: return "out of memory";
-  case 2: return "internal error";
-  case 3: return "the surface is self-intersecting";
-  case 4: return "a very small input feature size was detected";
-  case 5: return "two very close input facets were detected";
-  case 10: return "invalid input";
-  default: return "error code " + std::to_string(code);
+  case 1:
+    return "out of memory";
+  case 2:
+    return "internal error";
+  case 3:
+    return "the surface is self-intersecting";
+  case 4:
+    return "a very small input feature size was detected";
+  case 5:
+    return "two very close input facets were detected";
+  case 10:
+    return "invalid input";
+  default:
+    return "error code " + std::to_string(code);
   }
 }
 
 Output_mesh run_tetgen(const Triangle_soup& soup, double max_volume) {
   if (soup.triangles.empty()) throw std::runtime_error("TetGen: the boundary surface is empty");
-  tetgenio in, out;  // their destructors delete[] every list set below
+  tetgenio in, out; // their destructors delete[] every list set below
   in.firstnumber = 0;
   in.numberofpoints = static_cast<int>(soup.points.size());
   in.pointlist = new REAL[3 * soup.points.size()];
@@ -405,7 +438,8 @@ Output_mesh run_tetgen(const Triangle_soup& soup, double max_volume) {
     Output_mesh::Tetrahedron tet;
     for (int k = 0; k < 4; ++k) {
       const int v = out.tetrahedronlist[t * out.numberofcorners + k] - first;
-      if (v < 0 || v >= out.numberofpoints) throw std::runtime_error("TetGen output: vertex index out of range");
+      if (v < 0 || v >= out.numberofpoints)
+        throw std::runtime_error("TetGen output: vertex index out of range");
       std::uint32_t& r = renumber[static_cast<std::size_t>(v)];
       if (r == UINT32_MAX) {
         r = static_cast<std::uint32_t>(mesh.points.size());

@@ -23,18 +23,18 @@ namespace prstar {
 
 /// What to mesh and how finely.  Exactly one of `shape` and `surface_file` is set.
 struct Generate_options {
-  std::string shape;          ///< an implicit shape name (see `implicit_shapes()`), or empty
-  std::string surface_file;   ///< a closed triangle surface (.off) bounding a polyhedral domain, or empty
-  double cell_size = 0;       ///< required, > 0: Mesh_3 bound on the circumradius of the tetrahedra
-  double facet_size = 0;      ///< 0 means `cell_size`
-  double facet_distance = 0;  ///< 0 means `cell_size / 10`
-  double facet_angle = 25;    ///< in degrees, in (0, 30]
-  double cell_radius_edge_ratio = 3;  ///< >= 2
+  std::string shape;         ///< an implicit shape name (see `implicit_shapes()`), or empty
+  std::string surface_file;  ///< a closed triangle surface (.off) bounding a polyhedral domain, or empty
+  double cell_size = 0;      ///< required, > 0: Mesh_3 bound on the circumradius of the tetrahedra
+  double facet_size = 0;     ///< 0 means `cell_size`
+  double facet_distance = 0; ///< 0 means `cell_size / 10`
+  double facet_angle = 25;   ///< in degrees, in (0, 30]
+  double cell_radius_edge_ratio = 3; ///< >= 2
   /// mesh the boundary surface with Mesh_3 (implicit shape) or take the input triangles
   /// (surface file), then fill the volume with TetGen ("pq1.414a<v>", v = volume of a regular
   /// tetrahedron of edge `cell_size`) instead of Mesh_3's volume refinement
   bool tetgen = false;
-  bool quiet = false;  ///< no progress messages (they go to stderr, and only when it is a terminal)
+  bool quiet = false; ///< no progress messages (they go to stderr, and only when it is a terminal)
 };
 
 /// The implicit shapes: (name, one-line description), in a fixed order.
@@ -44,7 +44,8 @@ std::vector<std::pair<std::string, std::string>> implicit_shapes();
 /// a `Labeled_mesh_domain_3` over Epick, sequential.  The meshed domain has subdomain index 1.
 using Generate_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Generate_domain = CGAL::Labeled_mesh_domain_3<Generate_kernel>;
-using Generate_triangulation = CGAL::Mesh_triangulation_3<Generate_domain, CGAL::Default, CGAL::Sequential_tag>::type;
+using Generate_triangulation =
+    CGAL::Mesh_triangulation_3<Generate_domain, CGAL::Default, CGAL::Sequential_tag>::type;
 using Generate_c3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Generate_triangulation>;
 
 /// Runs Mesh_3: refinement, then perturbation and exudation up to minimum dihedral angles of 10 and
