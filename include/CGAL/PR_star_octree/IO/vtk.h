@@ -7,6 +7,7 @@
 #define CGAL_PR_STAR_OCTREE_IO_VTK_H
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 #include <CGAL/PR_star_octree/IO/internal/vtk_cells.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
@@ -655,8 +656,8 @@ void read_vtk(std::istream& in, Mesh& mesh, const std::string& name = "<stream>"
 /// `mesh` is then left unchanged; it is replaced on success.
 template <class Mesh>
 void read_vtk(const std::string& filename, Mesh& mesh) {
-  const std::string text = internal::load_file(filename);
-  internal::read_vtk_text(text, filename, mesh);
+  const internal::File_bytes bytes(filename); // not zero-filled, huge pages when large
+  internal::read_vtk_text(bytes.view(), filename, mesh);
 }
 
 /// \ingroup PkgPRStarOctreeIO

@@ -7,6 +7,7 @@
 #define CGAL_PR_STAR_OCTREE_IO_VTU_H
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/vtu_reader.h>
 #include <CGAL/PR_star_octree/IO/internal/vtu_writer.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
@@ -60,8 +61,8 @@ void read_vtu(std::istream& in, Mesh& mesh, const std::string& name = "<stream>"
 /// left unchanged; it is replaced on success.
 template <class Mesh>
 void read_vtu(const std::string& filename, Mesh& mesh) {
-  const std::string text = internal::load_file(filename);
-  internal::read_vtu_text(text, filename, mesh);
+  const internal::File_bytes bytes(filename); // not zero-filled, huge pages when large
+  internal::read_vtu_text(bytes.view(), filename, mesh);
 }
 
 namespace internal {

@@ -10,6 +10,7 @@
 // (offsets, connectivity, types) arrays into tetrahedra with all the checks, the names of the
 // cell-data arrays read as tetrahedron labels.
 
+#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 
 #include <cmath>
@@ -144,6 +145,8 @@ public:
             vtk_cell_type_name(static_cast<long long>(types[0])) + "), only tetrahedra (type 10) are read");
     size_ = nc == 0 ? 0 : static_cast<std::size_t>(end(nc - 1));
     tetrahedra.reserve(tetrahedra.size() + tets);
+    advise_huge_pages(tetrahedra.data() + tetrahedra.size(),
+                      (tetrahedra.capacity() - tetrahedra.size()) * sizeof(Tetrahedron));
   }
 
   /// the end of cell `i` in the connectivity

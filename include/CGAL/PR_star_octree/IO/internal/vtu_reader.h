@@ -12,6 +12,7 @@
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/internal/base64.h>
 #include <CGAL/PR_star_octree/IO/internal/decompress.h>
+#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 #include <CGAL/PR_star_octree/IO/internal/vtk_cells.h>
 #include <CGAL/PR_star_octree/IO/internal/xml.h>
@@ -590,7 +591,11 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
         std::vector<Point_3>& points;
         double c[3];
         int k;
-        void reserve(std::size_t n) { points.reserve(points.size() + n / 3); }
+        void reserve(std::size_t n) {
+          points.reserve(points.size() + n / 3);
+          advise_huge_pages(points.data() + points.size(),
+                            (points.capacity() - points.size()) * sizeof(Point_3));
+        }
         void operator()(const double* v, std::size_t n) {
           for (std::size_t i = 0; i < n; ++i) {
             c[k++] = v[i];
@@ -707,7 +712,10 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
             const std::vector<char>& kept;
             std::size_t i;
             bool integers;
-            void reserve(std::size_t n) { out.reserve(out.size() + n); }
+            void reserve(std::size_t n) {
+              out.reserve(out.size() + n);
+              advise_huge_pages(out.data() + out.size(), (out.capacity() - out.size()) * sizeof(int));
+            }
             void operator()(const double* v, std::size_t n) {
               for (std::size_t j = 0; j < n; ++j, ++i) {
                 if (!(v[j] == std::floor(v[j]) && v[j] >= double(std::numeric_limits<int>::min()) &&
