@@ -626,7 +626,7 @@ void write_vtk_stream(std::ostream& out, const Mesh& mesh,
 } // namespace internal
 
 /// \ingroup PkgPRStarOctreeIO
-/// Reads a legacy VTK text from a stream; `name` is used in error messages.  See
+/// Reads a legacy VTK file (ASCII or binary) from a stream; `name` is used in error messages.  See
 /// `read_vtk(const std::string&, Mesh&)`.
 template <class Mesh>
 void read_vtk(std::istream& in, Mesh& mesh, const std::string& name = "<stream>") {
@@ -635,25 +635,30 @@ void read_vtk(std::istream& in, Mesh& mesh, const std::string& name = "<stream>"
 }
 
 /// \ingroup PkgPRStarOctreeIO
-/// Reads a tetrahedral mesh from a legacy VTK file (`.vtk`), ASCII only.
+/// Reads a tetrahedral mesh from a legacy VTK file (`.vtk`), ASCII or BINARY.
 ///
-/// Expected: the header `# vtk DataFile Version x.y`, a title line, `ASCII`,
+/// Expected: the header `# vtk DataFile Version x.y`, a title line, `ASCII` or `BINARY`,
 /// `DATASET UNSTRUCTURED_GRID`, `POINTS n type`, the cells either as `CELLS n size` followed by
 /// records `4 a b c d` (up to version 5.0) or as `CELLS nOffsets nConnectivity` followed by
-/// `OFFSETS type` and `CONNECTIVITY type` arrays (version 5.1), and `CELL_TYPES n`.  Every cell
-/// must be a tetrahedron (type 10): any other cell is an error naming the cell and its type.
+/// `OFFSETS type` and `CONNECTIVITY type` arrays (version 5.1), and `CELL_TYPES n`.  In a binary
+/// file the values of each section follow its keyword line as big-endian binary numbers of the
+/// type named (`int` for the 4.x `CELLS` records and for `CELL_TYPES`), whatever the machine.
+/// The tetrahedra (type 10) are kept; cells of other types are counted in `mesh.skipped_cells` by
+/// type name; a file with cells but no tetrahedron is refused.
 ///
 /// `POINT_DATA`: every one-component `SCALARS` array (`LOOKUP_TABLE` line optional) and every
 /// one-component array of a `FIELD` becomes a point-data array, in file order (`%XX` escapes of
 /// names decoded); arrays with several components, `VECTORS`, `NORMALS`, `TENSORS`,
 /// `TEXTURE_COORDINATES`, `COLOR_SCALARS`, lookup tables, ids and `METADATA` blocks are skipped
-/// (their values are still checked to be numbers).  `CELL_DATA`: a one-component array named
-/// `label` or `medit:ref` gives `tetrahedron_labels` (rounded), the rest is skipped likewise.
-/// Keywords are case-insensitive; comments are not part of the format.
+/// (in ASCII their values are still checked to be numbers).  `CELL_DATA`: the first one-component
+/// array named `label`, `labels`, `subdomain`, `CellEntityIds`, `gmsh:physical`, `medit:ref` or
+/// `MaterialIds` with integer values gives `tetrahedron_labels`, the other one-component arrays
+/// become `cell_data` (values of the tetrahedra only).  Keywords are case-insensitive; comments
+/// are not part of the format.
 ///
-/// \throws Read_error on any problem (binary file, other dataset, non-tetrahedral cell, count
-/// mismatch, truncated data, index out of range, non-finite coordinate or point-data value...).
-/// `mesh` is then left unchanged; it is replaced on success.
+/// \throws Read_error on any problem (other dataset, no tetrahedron, count mismatch, truncated
+/// data, binary data of an unsupported type, index out of range, non-finite coordinate or point-data
+/// value...). `mesh` is then left unchanged; it is replaced on success.
 template <class Mesh>
 void read_vtk(const std::string& filename, Mesh& mesh) {
   const internal::File_bytes bytes(filename); // not zero-filled, huge pages when large

@@ -43,21 +43,31 @@ void read_vtu(std::istream& in, Mesh& mesh, const std::string& name = "<stream>"
 /// `Int8` ... `UInt64`, `Float32`, `Float64` in the formats `ascii`, `binary` (inline base64:
 /// the byte count header then the data, encoded together or as two blocks) and `appended`
 /// (`<AppendedData encoding="raw">` or `encoding="base64"`, arrays located by their `offset`).
+/// Compressed data (`compressor` `vtkZLibDataCompressor`, `vtkLZ4DataCompressor` or
+/// `vtkLZMADataCompressor`, as ParaView, VTK and meshio write them): the block header (number of
+/// blocks, block size, size of the last partial block, compressed size of each block) then the
+/// blocks, in every one of these encodings; each compressor needs its library (zlib, liblz4,
+/// liblzma) to have been found when the program was built, otherwise such a file is refused by
+/// name.  Every announced size is checked against the file before anything is allocated: block
+/// sizes against the bytes present, decompressed sizes against the compressed ones (at most the
+/// largest ratio the compressor can reach), so that a header announcing terabytes is refused.
 /// Several `<Piece>`s are concatenated (their vertex indices are local to each piece and they must
-/// have the same point-data arrays).  The parser is this package's own and accepts attributes in
-/// any order, either quote, comments, processing instructions and CDATA.
+/// have the same point- and cell-data arrays).  The parser is this package's own and accepts
+/// attributes in any order, either quote, comments, processing instructions and CDATA.
 ///
-/// Read: the `Points` (3 components); `Cells` `connectivity`, `offsets` and `types`, every cell
-/// having to be a tetrahedron (type 10) -- any other cell is an error naming the cell and its type;
-/// every one-component `PointData` array becomes a point-data array named after its `Name`, in
-/// file order (arrays with more components are skipped); a one-component `CellData` array named
-/// `label` or `medit:ref` gives `tetrahedron_labels` (rounded).
-///
-/// Not supported (clear error): compressed data (`compressor` attribute set, e.g. zlib) in binary
-/// or appended arrays; other dataset types.
+/// Read: the `Points` (3 components); `Cells` `connectivity`, `offsets` and `types` (any integer
+/// types): the tetrahedra (type 10) are kept, in file order; the cells of other types are counted
+/// in `mesh.skipped_cells` by type name (`"triangle"`, `"hexahedron"`...), and a file with cells
+/// but no tetrahedron is refused.  Every one-component `PointData` array becomes a point-data
+/// array named after its `Name`, in file order (arrays with more components are skipped).  In
+/// `CellData`, the first one-component array named `label`, `labels`, `subdomain`,
+/// `CellEntityIds`, `gmsh:physical`, `medit:ref` or `MaterialIds` whose values are all integers
+/// gives `tetrahedron_labels`; every other one-component array becomes a `cell_data` array (values
+/// of the tetrahedra only).
 ///
 /// \throws Read_error on any problem (malformed XML, missing element or attribute, wrong number of
-/// values, truncated binary data, index out of range, non-finite coordinate...).  `mesh` is then
+/// values, truncated binary data, corrupt or truncated compressed block, sizes that disagree, index
+/// out of range, non-finite coordinate...).  `mesh` is then
 /// left unchanged; it is replaced on success.
 template <class Mesh>
 void read_vtu(const std::string& filename, Mesh& mesh) {
