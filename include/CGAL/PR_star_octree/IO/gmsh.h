@@ -63,6 +63,7 @@ void read_gmsh(std::istream& in, Mesh& mesh, const std::string& name = "<stream>
 ///   tetrahedron without physical tag gets 0 (so does one whose physical tag is 0); when no
 ///   tetrahedron has a non-zero physical tag, `tetrahedron_labels` is left empty.  A 2.2 file
 ///   repeats an element that belongs to several physical groups: it is then read several times.
+///   In a partitioned 4.1 file, the physical tags of the volumes come from `$PartitionedEntities`.
 /// - `$PhysicalNames` of dimension 3 go to `mesh.label_names` (physical tag -> name).
 /// - Other sections (`$NodeData`, `$ElementData`, `$Periodic`, `$PartitionedEntities`...) are
 ///   skipped up to their end marker.

@@ -184,8 +184,11 @@ public:
       } else if (section == "$Entities" && version_ == 41) {
         if (has_entities_) fail("duplicate $Entities section");
         if (has_elements) fail("$Entities after $Elements");
-        read_entities();
+        read_entities(false);
         has_entities_ = true;
+      } else if (section == "$PartitionedEntities" && version_ == 41) {
+        if (has_elements) fail("$PartitionedEntities after $Elements");
+        read_entities(true);
       } else if (section == "$Nodes") {
         if (has_nodes) fail("duplicate $Nodes section");
         if (version_ == 41)
@@ -390,43 +393,44 @@ private:
     }
   }
 
-  // physical tags of an entity: the first one is kept
-  void read_entities() {
+  // $Entities, or $PartitionedEntities (`partitioned`): the first physical tag of each volume is kept
+  int entity_int(const char* what) { return binary_ ? bin<std::int32_t>(what) : small_int(what); }
+  std::uint64_t entity_count(const char* what, std::size_t item_bytes) {
+    const std::uint64_t n = binary_ ? bin_size(what) : count(what);
+    if (binary_) need_items(n, item_bytes, what);
+    return n;
+  }
+  void read_entities(bool partitioned) {
+    if (binary_) end_line(partitioned ? "$PartitionedEntities" : "$Entities");
+    if (partitioned) {
+      volume_physical_.clear(); // the element blocks name partitioned entities
+      entity_count("number of partitions", 0);
+      const std::uint64_t ghosts = entity_count("number of ghost entities", 8);
+      for (std::uint64_t k = 0; k < 2 * ghosts; ++k) entity_int("ghost entity");
+    }
     std::uint64_t n[4];
-    if (binary_) end_line("$Entities");
-    for (std::uint64_t& k : n) k = binary_ ? bin_size("$Entities counts") : count("number of entities");
+    for (std::uint64_t& k : n) k = entity_count("number of entities", 0);
     for (int dim = 0; dim < 4; ++dim) {
       for (std::uint64_t i = 0; i < n[dim]; ++i) {
-        if (binary_) {
-          const int tag = bin<std::int32_t>("entity tag");
-          for (int k = 0; k < (dim == 0 ? 3 : 6); ++k) bin<double>("entity box");
-          const std::uint64_t nphys = bin_size("number of physical tags");
-          need_items(nphys, 4, "physical tags");
-          int first = 0;
-          for (std::uint64_t k = 0; k < nphys; ++k) {
-            const int p = bin<std::int32_t>("physical tag");
-            if (k == 0) first = p;
-          }
-          if (dim == 3 && nphys > 0) volume_physical_[tag] = first;
-          if (dim > 0) {
-            const std::uint64_t nb = bin_size("number of bounding entities");
-            need_items(nb, 4, "bounding entities");
-            pos_ += static_cast<std::size_t>(nb) * 4;
-          }
-        } else {
-          const int tag = small_int("entity tag");
-          for (int k = 0; k < (dim == 0 ? 3 : 6); ++k) real("entity coordinate");
-          const std::uint64_t nphys = count("number of physical tags");
-          int first = 0;
-          for (std::uint64_t k = 0; k < nphys; ++k) {
-            const int p = small_int("physical tag");
-            if (k == 0) first = p;
-          }
-          if (dim == 3 && nphys > 0) volume_physical_[tag] = first;
-          if (dim > 0) {
-            const std::uint64_t nb = count("number of bounding entities");
-            for (std::uint64_t k = 0; k < nb; ++k) integer("bounding entity tag");
-          }
+        const int tag = entity_int("entity tag");
+        if (partitioned) {
+          entity_int("parent dimension");
+          entity_int("parent tag");
+          const std::uint64_t parts = entity_count("number of partitions", 4);
+          for (std::uint64_t k = 0; k < parts; ++k) entity_int("partition tag");
+        }
+        for (int k = 0; k < (dim == 0 ? 3 : 6); ++k)
+          binary_ ? bin<double>("entity box") : real("entity coordinate");
+        const std::uint64_t nphys = entity_count("number of physical tags", 4);
+        int first = 0;
+        for (std::uint64_t k = 0; k < nphys; ++k) {
+          const int p = entity_int("physical tag");
+          if (k == 0) first = p;
+        }
+        if (dim == 3 && nphys > 0) volume_physical_[tag] = first;
+        if (dim > 0) {
+          const std::uint64_t nb = entity_count("number of bounding entities", 4);
+          for (std::uint64_t k = 0; k < nb; ++k) entity_int("bounding entity tag");
         }
       }
     }
