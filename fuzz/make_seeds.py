@@ -185,3 +185,8 @@ def meshb(version, endian):
 for version in (1, 2, 3, 4):
     put("meshb", "v%d.meshb" % version, meshb(version, "<"))
 put("meshb", "v2be.meshb", meshb(2, ">"))
+put("msh", "p41.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\n1 0 0 0 1 1 1 1 7 0\n$EndEntities\n"
+    "$PartitionedEntities\n2\n1\n5 2\n0 0 0 2\n5 3 1 1 1 0 0 0 1 1 1 1 7 0\n6 3 1 1 2 0 0 0 1 1 1 0 0\n"
+    "$EndPartitionedEntities\n$Nodes\n1 5 1 5\n3 5 0 5\n1\n2\n3\n4\n5\n" +
+    "".join("%g %g %g\n" % p for p in P) + "$EndNodes\n$Elements\n2 2 1 2\n3 5 4 1\n1 1 2 3 4\n3 6 4 1\n2 2 3 4 5\n"
+    "$EndElements\n")

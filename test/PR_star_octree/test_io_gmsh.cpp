@@ -490,6 +490,18 @@ static void test_hand_written() {
     CHECK_EQUAL(m.tetrahedra.size(), 1u);
     CHECK(m.tetrahedron_labels.empty());
   }
+  {
+    // partitioned 4.1: the element blocks name partitioned entities (physical tags in
+    // $PartitionedEntities; entity 5 has the tag of $Entities' volume 1, which must not be used)
+    const std::string s =
+        "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 2\n1 0 0 0 1 1 1 1 7 0\n"
+        "5 0 0 0 1 1 1 1 99 0\n$EndEntities\n$PartitionedEntities\n2\n1\n5 2\n0 0 0 2\n"
+        "5 3 1 1 1 0 0 0 1 1 1 1 7 0\n6 3 1 2 1 2 0 0 0 1 1 1 0 0\n$EndPartitionedEntities\n"
+        "$Nodes\n1 5 1 5\n3 5 0 5\n1\n2\n3\n4\n5\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n$EndNodes\n"
+        "$Elements\n2 2 1 2\n3 6 4 1\n1 1 2 3 4\n3 5 4 1\n2 2 3 4 5\n$EndElements\n";
+    const Mesh m = read_as(s, ".msh");
+    CHECK((m.tetrahedron_labels == std::vector<int>{0, 7}));
+  }
   // binary 4.1 in both byte orders, with a sparse tag space (sorted map) and a parametric block
   for (bool swap : {false, true}) {
     prstar_test::Failure_context ctx(std::string("msh 4.1 binary, swapped ") + (swap ? "yes" : "no"));
