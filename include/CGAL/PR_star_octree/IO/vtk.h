@@ -241,6 +241,7 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
     r.fail("not a legacy VTK file: the first line must be '# vtk DataFile Version x.y'");
   if (!r.next_raw_line(line)) r.fail("unexpected end of file, expected the title line");
   if (!r.next_raw_line(line)) r.fail("unexpected end of file, expected ASCII or BINARY");
+  const std::size_t format_line = r.line();
   if (iequals(trim(line), "BINARY"))
     p.binary = true;
   else if (!iequals(trim(line), "ASCII"))
@@ -448,7 +449,9 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
       r.fail("unknown or misplaced keyword " + quote(token));
     }
   }
-  if (!has_dataset) r.fail("no DATASET line");
+  if (!has_dataset)
+    r.fail_at(format_line, std::string("the ") + (p.binary ? "binary" : "ASCII") +
+                               " file ends after its header: no DATASET line");
   if (!has_points) r.fail("no POINTS section");
   if (!has_cells) r.fail("no CELLS section");
   if (!has_types) r.fail("no CELL_TYPES section");
