@@ -18,7 +18,9 @@
 
 #include <CGAL/PR_star_octree/IO.h>
 
+#ifdef CGAL_PR_STAR_OCTREE_HAS_ZLIB
 #include <zlib.h>
+#endif
 #ifdef CGAL_PR_STAR_OCTREE_HAS_LZ4
 #include <lz4.h>
 #endif
@@ -255,8 +257,13 @@ static const char* comp_name(Comp c) {
 static bool comp_available(Comp c) {
   switch (c) {
   case Comp::NONE:
-  case Comp::ZLIB:
     return true;
+  case Comp::ZLIB:
+#ifdef CGAL_PR_STAR_OCTREE_HAS_ZLIB
+    return true;
+#else
+    return false;
+#endif
   case Comp::LZ4:
 #ifdef CGAL_PR_STAR_OCTREE_HAS_LZ4
     return true;
@@ -274,7 +281,10 @@ static bool comp_available(Comp c) {
 }
 
 static std::string compress(Comp c, const std::string& raw) {
+  (void)c; // (without any compression library)
+  (void)raw;
   std::string out;
+#ifdef CGAL_PR_STAR_OCTREE_HAS_ZLIB
   if (c == Comp::ZLIB) {
     uLongf n = compressBound(raw.size());
     out.resize(n);
@@ -282,6 +292,7 @@ static std::string compress(Comp c, const std::string& raw) {
               6);
     out.resize(n);
   }
+#endif
 #ifdef CGAL_PR_STAR_OCTREE_HAS_LZ4
   if (c == Comp::LZ4) {
     out.resize(LZ4_compressBound(int(raw.size())));
@@ -486,7 +497,9 @@ static void test_vtu_combinations() {
               ++files;
             }
   }
-  CHECK(files >= 2 * 3 * 2 * 4 * 2 * 2);
+  int available = 0;
+  for (Comp comp : {Comp::NONE, Comp::ZLIB, Comp::LZ4, Comp::LZMA}) available += comp_available(comp) ? 1 : 0;
+  CHECK_EQUAL(files, available * 2 * 3 * 2 * 4 * 2);
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -529,6 +542,10 @@ static std::string one_tet_vtu(const std::string& points_bytes, const std::strin
 }
 
 static void test_malformed_compressed() {
+  if (!comp_available(Comp::ZLIB)) {
+    prstar_test::skip("malformed compressed VTU: zlib not found at build time");
+    return;
+  }
   std::string raw;
   const double p[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
   for (double d : p) put_value(raw, double_bits(d), 8, false);
@@ -705,7 +722,8 @@ static void test_vtu_writer() {
     const char* must_contain;
   };
   const std::vector<Case> cases = {
-      {"default.vtu", [&](const std::string& f) { IO::write_vtu(f, m, extra); }, "vtkZLibDataCompressor"},
+      {"default.vtu", [&](const std::string& f) { IO::write_vtu(f, m, extra); },
+       comp_available(Comp::ZLIB) ? "vtkZLibDataCompressor" : "format=\"appended\""},
       {"ascii.vtu",
        [&](const std::string& f) { IO::write_vtu(f, m, extra, CGAL::parameters::use_binary_mode(false)); },
        "format=\"ascii\""},
