@@ -289,9 +289,19 @@ static void test_vtk() {
 
   const std::string cells = "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10 10\n";
   EXPECT_ERROR(put("bin.vtk", "# vtk DataFile Version 4.2\nx\nBINARY\n"), read_vtk,
-               {":3:", "binary legacy VTK files are not supported"});
-  EXPECT_ERROR(put("tri.vtk", vtk_head + vtk_points + "CELLS 2 9\n4 0 1 2 3\n3 1 2 3\nCELL_TYPES 2\n10 5\n"),
-               read_vtk, {"cell 1 has VTK type 5 (triangle)"});
+               {":3:", "no DATASET line"});
+  // Cells other than tetrahedra are skipped and counted by type name; only such cells: refused.
+  {
+    Mesh t =
+        read_ok(put("tri.vtk", vtk_head + vtk_points + "CELLS 2 9\n4 0 1 2 3\n3 1 2 3\nCELL_TYPES 2\n10 5\n"),
+                [](const std::string& f, Mesh& mm) { IO::read_vtk(f, mm); });
+    CHECK_EQUAL(t.points, ref_points);
+    CHECK_EQUAL(t.tetrahedra, std::vector<Tet>{ref_tets[0]});
+    CHECK_EQUAL(t.skipped_cells.size(), std::size_t(1));
+    CHECK_EQUAL(t.skipped_cells["triangle"], std::size_t(1));
+  }
+  EXPECT_ERROR(put("onlytri.vtk", vtk_head + vtk_points + "CELLS 1 4\n3 1 2 3\nCELL_TYPES 1\n5\n"), read_vtk,
+               {"tetrahedr"});
   EXPECT_ERROR(put("poly.vtk", "# vtk DataFile Version 4.2\nx\nASCII\nDATASET POLYDATA\n"), read_vtk,
                {":4:", "POLYDATA"});
   EXPECT_ERROR(
@@ -456,7 +466,14 @@ static void test_vtu() {
   EXPECT_ERROR(
       put("tag.vtu", "<VTKFile type=\"UnstructuredGrid\">\n<UnstructuredGrid>\n</Piece>\n</VTKFile>\n"),
       read_vtu, {":3:", "does not match <UnstructuredGrid>"});
-  EXPECT_ERROR(put("tri.vtu", vtu_ascii("10 5")), read_vtu, {"cell 1 has VTK type 5 (triangle)"});
+  {
+    Mesh t = read_ok(put("tri.vtu", vtu_ascii("10 5")),
+                     [](const std::string& f, Mesh& mm) { IO::read_vtu(f, mm); });
+    CHECK_EQUAL(t.points, ref_points);
+    CHECK_EQUAL(t.tetrahedra, std::vector<Tet>{ref_tets[0]});
+    CHECK_EQUAL(t.skipped_cells["triangle"], std::size_t(1));
+  }
+  EXPECT_ERROR(put("onlytri.vtu", vtu_ascii("5 5")), read_vtu, {"tetrahedr"});
   EXPECT_ERROR(put("few.vtu", vtu(le, "ascii", "0 0 0 1 0 0 0 1 0 0 0 1 1 1", "0 1 2 3 1 2 3 4", "4 8",
                                   "10 10", "0.5 1 2 3 4")),
                read_vtu, {"14 values, expected 15"});
@@ -477,7 +494,7 @@ static void test_vtu() {
   EXPECT_ERROR(put("zlib.vtu",
                    vtu(le + " compressor=\"vtkZLibDataCompressor\"", "binary", b64_points, b64_conn,
                        "EAAAAAAAAAAEAAAAAAAAAAgAAAAAAAAA", "AgAAAAAAAAAKCg==", b64_temp, "Float64", "Int64")),
-               read_vtu, {"compressed data", "not supported"});
+               read_vtu, {"compressed data", "blocks announced"}); // the data are not compressed
   EXPECT_ERROR(put("poly.vtu", "<VTKFile type=\"PolyData\"><PolyData/></VTKFile>"), read_vtu,
                {":1:", "'PolyData' is not supported"});
   EXPECT_ERROR(put("open.vtu", "<VTKFile type=\"UnstructuredGrid\">\n<UnstructuredGrid>\n"), read_vtu,
@@ -612,8 +629,9 @@ static void test_round_trips() {
   CHECK(IO::is_readable_extension("a/b.VTU") && IO::is_readable_extension("x.ele") &&
         IO::is_readable_extension(".ts"));
   CHECK(!IO::is_readable_extension("x.ply") && !IO::is_readable_extension("dir.vtu/file"));
-  CHECK(IO::is_writable_extension("x.Mesh") && !IO::is_writable_extension("x.vtk") &&
-        !IO::is_writable_extension("x.node"));
+  CHECK(IO::is_writable_extension("x.Mesh") && IO::is_writable_extension("x.vtk") &&
+        IO::is_writable_extension("x.node") && !IO::is_writable_extension("x.ply") &&
+        !IO::is_writable_extension("x.vtu/y"));
   EXPECT_ERROR(put("mesh.xyz", "1"), read_any,
                {"unknown file extension '.xyz'", ".mesh, .node/.ele, .vtk, .vtu"});
 }
