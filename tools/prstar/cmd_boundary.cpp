@@ -28,7 +28,7 @@ int run_boundary(const Options& o) {
   const std::size_t kv = o.kv();
   const std::string out = o.output();
   Progress_bar progress(o.show_progress());
-  const Mesh mesh = read_mesh(input, progress);
+  Mesh mesh = read_mesh(input, progress); // written back with the computed point arrays
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
   const Octree tree(CGAL::PR_star_octree::make_input(mesh),
@@ -43,7 +43,7 @@ int run_boundary(const Options& o) {
     progress.phase("writing " + out);
     CGAL::PR_star_octree::Point_data_array a{"boundary", std::vector<double>(mesh.points.size())};
     for (std::size_t v = 0; v < types.size(); ++v) a.values[v] = vertex_type_code(types[v]);
-    write_vtu_file(out, mesh, {a});
+    write_mesh_with_point_data(out, mesh, {a});
     progress.finish();
   }
   if (o.json()) {
@@ -95,9 +95,10 @@ Command boundary_command() {
 Section 7: 2|e| != 3|t| in the vertex link, plus a check that the link is a sphere or a disc).)")
       .kv()
       .max_depth()
-      .output("OUT.vtu", ".vtu",
-              "write the mesh with the point array `boundary` (0 interior, 1 boundary,\n"
-              "2 non-manifold, 3 in no tetrahedron) for ParaView")
+      .output("OUT", point_data_outputs(),
+              "write the mesh (labels kept) with the point array `boundary` (0 interior,\n"
+              "1 boundary, 2 non-manifold, 3 in no tetrahedron): .vtu/.vtk for ParaView, or\n"
+              ".node/.ele (TetGen attribute)")
       .json_keys("keys: vertices, tetrahedra, kv, boundary_vertices, interior_vertices,\n"
                  "nonmanifold_vertices, unreferenced_vertices, boundary_triangles, boundary_tetrahedra\n"
                  "(tetrahedra with a boundary or non-manifold vertex), boundary_face_tetrahedra (with a\n"

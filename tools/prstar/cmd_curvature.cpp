@@ -29,7 +29,7 @@ int run_curvature(const Options& o) {
   const std::size_t kv = o.kv();
   const std::string out = o.output(), csv = o.output("--csv");
   Progress_bar progress(o.show_progress());
-  const Mesh mesh = read_mesh(input, progress);
+  Mesh mesh = read_mesh(input, progress); // written back with the computed point arrays
 
   // The field, in the user's vertex order.
   std::string field_name = o.get("--field");
@@ -102,7 +102,7 @@ int run_curvature(const Options& o) {
         if (!std::isfinite(x)) x = 0;
       return a;
     };
-    write_vtu_file(out, mesh, {boundary, finite(distortion), finite(domain)});
+    write_mesh_with_point_data(out, mesh, {boundary, finite(distortion), finite(domain)});
     progress.finish();
   }
   if (!csv.empty()) {
@@ -168,9 +168,10 @@ Non-manifold vertices get NaN.)")
               "a point-data array of MESH (default: its first one), or x, y, z for a coordinate")
       .kv()
       .max_depth()
-      .output("OUT.vtu", ".vtu",
-              "write the mesh with point arrays `boundary`, `distortion`, `domain_curvature`\n"
-              "(non-manifold vertices: boundary = 2 and 0 for the undefined values)")
+      .output("OUT", point_data_outputs(),
+              "write the mesh (labels kept) with point arrays `boundary`, `distortion`,\n"
+              "`domain_curvature` (non-manifold vertices: boundary = 2 and 0 for the undefined\n"
+              "values): .vtu/.vtk for ParaView, or .node/.ele (TetGen attributes)")
       .output("OUT.csv", ".csv",
               "write one row per input vertex, in the input order: vertex,x,y,z,boundary,distortion\n"
               "(boundary: 0 interior, 1 boundary, 2 non-manifold, 3 in no tetrahedron;\n"

@@ -9,6 +9,7 @@
 #include <CGAL/PR_star_octree/Leaf_topology.h>
 #include <CGAL/PR_star_octree/parameters.h>
 
+#include <fstream>
 #include <iostream>
 
 namespace prstar {
@@ -36,6 +37,11 @@ void statistics_json(prstar::Json& j, const CGAL::PR_star_octree::Statistics& s,
   j.field("duplicate_vertices", s.duplicate_vertices).field("unreferenced_vertices", s.unreferenced_vertices);
   j.field("reoriented_tetrahedra", s.reoriented_tetrahedra)
       .field("degenerate_tetrahedra", s.degenerate_tetrahedra);
+  if (!s.subdomains.empty()) { // the number of tetrahedra of each label
+    j.key("subdomains").begin_object();
+    for (const auto& l : s.subdomains) j.field(std::to_string(l.first), l.second);
+    j.end_object();
+  }
   j.key("storage").begin_object();
   j.field("prstar_overhead_per_vertex", s.prstar_overhead_per_vertex);
   j.field("prstar_total_per_vertex", s.prstar_total_per_vertex);
@@ -44,6 +50,7 @@ void statistics_json(prstar::Json& j, const CGAL::PR_star_octree::Statistics& s,
   j.field("bytes", s.bytes.total());
   j.key("bytes_detail").begin_object();
   j.field("points", s.bytes.points).field("scalars", s.bytes.scalars).field("tetrahedra", s.bytes.tetrahedra);
+  if (s.bytes.labels) j.field("labels", s.bytes.labels);
   j.field("nodes", s.bytes.nodes).field("leaf_tetrahedra", s.bytes.leaf_tetrahedra);
   j.field("permutations", s.bytes.permutations).field("index", s.bytes.index());
   j.end_object();
@@ -51,11 +58,51 @@ void statistics_json(prstar::Json& j, const CGAL::PR_star_octree::Statistics& s,
   j.end_object();
 }
 
+// The leaf boxes of `tree` as an ASCII VTU of voxels (VTK type 11) with the cell arrays `depth`,
+// `vertices` and `tetrahedra` (the leaf's counts), for ParaView (paper Figure 4).
+void write_leaf_boxes(const std::string& out, const Octree& tree) {
+  write_through_temporary(out, [&](const std::string& tmp) {
+    std::ofstream f(tmp);
+    f.precision(17);
+    const std::size_t n = tree.number_of_leaves();
+    f << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+         "byte_order=\"LittleEndian\">\n"
+      << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << 8 * n << "\" NumberOfCells=\"" << n << "\">\n"
+      << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (auto leaf : tree.leaves()) {
+      const CGAL::Bbox_3 b = tree.node_bbox(leaf);
+      for (int c = 0; c < 8; ++c)
+        f << (c & 1 ? b.xmax() : b.xmin()) << ' ' << (c & 2 ? b.ymax() : b.ymin()) << ' '
+          << (c & 4 ? b.zmax() : b.zmin()) << '\n';
+    }
+    f << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" "
+         "format=\"ascii\">\n";
+    for (std::size_t i = 0; i < 8 * n; ++i) f << i << (i % 8 == 7 ? '\n' : ' ');
+    f << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    for (std::size_t i = 1; i <= n; ++i) f << 8 * i << '\n';
+    f << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+    for (std::size_t i = 0; i < n; ++i) f << "11\n";
+    f << "</DataArray>\n</Cells>\n<CellData>\n";
+    auto array = [&](const char* name, auto value) {
+      f << "<DataArray type=\"Int64\" Name=\"" << name << "\" format=\"ascii\">\n";
+      for (auto leaf : tree.leaves()) f << value(leaf) << '\n';
+      f << "</DataArray>\n";
+    };
+    array("depth", [&](Octree::Node_index l) { return tree.depth(l); });
+    array("vertices", [&](Octree::Node_index l) { return tree.node(l).number_of_vertices(); });
+    array("tetrahedra", [&](Octree::Node_index l) { return tree.node(l).number_of_tetrahedra(); });
+    f << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    f.close();
+    if (!f) throw std::runtime_error(tmp + ": cannot write");
+  });
+}
+
 } // namespace
 
 // Builds the octree for each k_v and prints the statistics (a table, or JSON).
 void report_statistics(const Mesh& mesh, const std::string& name, const std::vector<std::size_t>& kvs,
-                       std::size_t max_depth, bool json, Progress_bar& progress) {
+                       std::size_t max_depth, bool json, Progress_bar& progress,
+                       const std::string& octree_out) {
   std::vector<CGAL::PR_star_octree::Statistics> stats;
   std::vector<double> seconds;
   CGAL::PR_star_octree::Simplex_counts counts;
@@ -66,6 +113,11 @@ void report_statistics(const Mesh& mesh, const std::string& name, const std::vec
     seconds.push_back(progress.seconds());
     progress.finish();
     stats.push_back(tree.statistics());
+    if (!octree_out.empty() && stats.size() == kvs.size()) { // the last k_v of the list
+      progress.phase("writing " + octree_out);
+      write_leaf_boxes(octree_out, tree);
+      progress.finish();
+    }
     if (stats.size() == 1) { // the counts do not depend on k_v: compute them once, locally
       progress.phase("counting edges and triangles");
       counts = CGAL::PR_star_octree::count_simplices(tree, params::progress(progress.callback()));
@@ -97,6 +149,18 @@ void report_statistics(const Mesh& mesh, const std::string& name, const std::vec
   if (s0.duplicate_vertices) std::cout << "  warning: " << s0.duplicate_vertices << " duplicate vertices\n";
   if (s0.unreferenced_vertices)
     std::cout << "  " << s0.unreferenced_vertices << " vertices in no tetrahedron\n";
+  if (!s0.subdomains.empty()) {
+    std::cout << "  " << s0.subdomains.size() << (s0.subdomains.size() == 1 ? " label:" : " labels:");
+    std::size_t shown = 0;
+    for (const auto& l : s0.subdomains) {
+      if (++shown > 12) {
+        std::cout << " ...";
+        break;
+      }
+      std::cout << " " << l.first << " (" << l.second << " tetrahedra)";
+    }
+    std::cout << "\n";
+  }
   std::cout << "  extended IA cost model: overhead " << fixed(s0.ia_overhead_per_vertex, 2) << " |V|, total "
             << fixed(s0.ia_total_per_vertex, 2) << " |V|\n\n";
 
@@ -125,7 +189,7 @@ namespace {
 int run_stats(const Options& o) {
   Progress_bar progress(o.show_progress());
   const Mesh mesh = read_mesh(o.input(), progress);
-  report_statistics(mesh, o.input(), o.kvs(), o.max_depth(), o.json(), progress);
+  report_statistics(mesh, o.input(), o.kvs(), o.max_depth(), o.json(), progress, o.output("--octree"));
   return exit_success;
 }
 
@@ -142,6 +206,10 @@ structure (in multiples of |V|), and the bytes really used; also the numbers of 
 triangles and the Euler characteristic, counted leaf by leaf.)")
       .kv_list()
       .max_depth()
+      .output("OUT.vtu", ".vtu",
+              "write the leaf boxes of the octree (of the last k_v given) as VTK voxels with the\n"
+              "cell arrays depth, vertices and tetrahedra, for ParaView",
+              false, "--octree")
       .json_keys("(an array of objects for a list of k_v); the keys are listed in the README")
       .run(run_stats);
 }

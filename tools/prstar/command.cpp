@@ -287,8 +287,19 @@ Options Command::parse(int argc, char** argv, int first) const {
       if (!CGAL::PR_star_octree::IO::is_writable_extension(value))
         throw Usage_error(value + ": cannot write this format (writable: " +
                           CGAL::PR_star_octree::IO::writable_extensions() + ")");
-    } else if (!ends_with(value, d.extension))
-      throw Usage_error(value + ": the output must be a " + d.extension + " file");
+    } else {
+      // a comma-separated list of accepted extensions
+      bool accepted = false;
+      std::string list;
+      for (std::size_t start = 0; start <= d.extension.size();) {
+        const std::size_t comma = std::min(d.extension.find(',', start), d.extension.size());
+        const std::string e = d.extension.substr(start, comma - start);
+        accepted = accepted || ends_with(value, e);
+        list += (list.empty() ? "" : comma == d.extension.size() ? " or " : ", ") + e;
+        start = comma + 1;
+      }
+      if (!accepted) throw Usage_error(value + ": the output must be a " + list + " file");
+    }
     for (const std::string& in : inputs)
       for (const std::string& a : mesh_files(in))
         for (const std::string& b : mesh_files(value))
@@ -392,10 +403,17 @@ void write_mesh_file(const std::string& out, const Mesh& mesh) {
       out, [&](const std::string& tmp) { CGAL::PR_star_octree::IO::write_tetrahedral_mesh(tmp, mesh); });
 }
 
-void write_vtu_file(const std::string& out, const Mesh& mesh,
-                    const std::vector<CGAL::PR_star_octree::Point_data_array>& arrays) {
-  write_through_temporary(
-      out, [&](const std::string& tmp) { CGAL::PR_star_octree::IO::write_vtu(tmp, mesh, arrays); });
+void write_mesh_with_point_data(const std::string& out, Mesh& mesh,
+                                const std::vector<CGAL::PR_star_octree::Point_data_array>& arrays) {
+  const std::size_t own = mesh.point_data.size();
+  mesh.point_data.insert(mesh.point_data.end(), arrays.begin(), arrays.end());
+  try {
+    write_mesh_file(out, mesh);
+  } catch (...) {
+    mesh.point_data.resize(own);
+    throw;
+  }
+  mesh.point_data.resize(own);
 }
 
 } // namespace prstar

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Remakes the pictures of the manual and the README (doc/PR_star_octree/fig/*.png) from the tool's
+# own output files, rendered by scripts/render_pictures.py with VTK's Python bindings off screen.
+#
+#   bash scripts/make_pictures.sh [OUT_DIR]          (default: doc/PR_star_octree/fig)
+#
+# Meshes: the real meshes of ../shared/data when present (bunny_sofa.vtu for the octree, the SPX
+# volume-rendering dataset spx_zsweep.off and its scalar field for the boundary classes and the
+# distortion), otherwise meshes made by `prstar generate` (CGAL Mesh_3).  Needs a built prstar (scripts/build.sh), python3-vtk9 and, on a
+# machine without a display, xvfb-run (both installed by scripts/install_dependencies.sh).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+out="${1:-$root/doc/PR_star_octree/fig}"
+prstar="$root/build/tools/prstar/prstar"
+[ -x "$prstar" ] || { echo "make_pictures.sh: build prstar first (bash scripts/build.sh)" >&2; exit 1; }
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+shared="$root/../shared/data"
+if [ -f "$shared/bunny_sofa.vtu" ] && [ -f "$shared/spx_zsweep.off" ]; then
+  octree_mesh="$shared/bunny_sofa.vtu"; octree_name="bunny (SOFA)"
+  field_mesh="$shared/spx_zsweep.off"; field_name="SPX (EDF)"
+else
+  "$prstar" generate --shape torus --cell-size 0.08 -o "$work/torus.mesh" --quiet
+  "$prstar" generate --shape sphere --cell-size 0.08 -o "$work/sphere.mesh" --quiet
+  octree_mesh="$work/torus.mesh"; octree_name="torus (Mesh_3)"
+  field_mesh="$work/sphere.mesh"; field_name="ball (Mesh_3, field x)"
+fi
+printf '%s\n%s\n' "$octree_name" "$field_name" > "$work/names.txt"
+
+"$prstar" boundary "$octree_mesh" -o "$work/mesh_boundary.vtu" --quiet > /dev/null
+"$prstar" boundary "$field_mesh" -o "$work/field_boundary.vtu" --quiet > /dev/null
+"$prstar" stats "$octree_mesh" --kv 20 --octree "$work/octree_kv20.vtu" --quiet > /dev/null
+"$prstar" stats "$octree_mesh" --kv 200 --octree "$work/octree_kv200.vtu" --quiet > /dev/null
+if [ "$field_mesh" = "$work/sphere.mesh" ]; then
+  "$prstar" curvature "$field_mesh" --field x -o "$work/curvature.vtu" --quiet > /dev/null
+else
+  "$prstar" curvature "$field_mesh" -o "$work/curvature.vtu" --quiet > /dev/null
+fi
+
+render=(/usr/bin/python3 "$root/scripts/render_pictures.py" "$work" "$out")
+if [ -z "${DISPLAY:-}" ] && command -v xvfb-run > /dev/null; then
+  xvfb-run -a -s "-screen 0 1280x1024x24" "${render[@]}"
+else
+  "${render[@]}"
+fi
