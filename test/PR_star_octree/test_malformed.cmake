@@ -132,7 +132,14 @@ set(vc "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10 10\n")
 case(v_empty.vtk "" "# vtk DataFile Version")
 case(v_binary.vtk "# vtk DataFile Version 4.2\nx\nBINARY\n" ":3: .*binary")
 case(v_polydata.vtk "# vtk DataFile Version 4.2\nx\nASCII\nDATASET POLYDATA\n" ":4: .*POLYDATA")
-case(v_triangle.vtk "${vh}${vp}CELLS 2 9\n4 0 1 2 3\n3 1 2 3\nCELL_TYPES 2\n10 5\n" "cell 1 .*type 5")
+# A tetrahedron and a triangle: the tetrahedron is kept, the triangle reported (mixed-cell files are
+# read since issue 12).
+file(WRITE "${WORK}/v_triangle.vtk" "${vh}${vp}CELLS 2 9\n4 0 1 2 3\n3 1 2 3\nCELL_TYPES 2\n10 5\n")
+execute_process(COMMAND ${PRSTAR} stats ${WORK}/v_triangle.vtk --json RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err TIMEOUT 60)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "\"tetrahedra\": 1," OR NOT err MATCHES "1 tetrahedra kept; skipped the other cells: 1 triangle")
+  fail(v_triangle.vtk "mixed cells: rc ${rc}, stdout ${out}, stderr ${err}")
+endif()
 case(v_hexahedron.vtk "${vh}${vp}CELLS 1 9\n8 0 1 2 3 4 0 1 2\nCELL_TYPES 1\n12\n" "cell 0 .*type 12")
 case(v_cells_size.vtk "${vh}${vp}CELLS 2 11\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10 10\n" "10 values.*11")
 case(v_trunc_points.vtk "${vh}POINTS 5 float\n0 0 0 1 0 0\n" "end of file.*POINTS|POINTS.*end of file")

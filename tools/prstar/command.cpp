@@ -14,6 +14,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <iostream>
 #include <cstring>
 #include <new>
 #include <sstream>
@@ -355,6 +356,14 @@ Mesh read_mesh(const std::string& file, Progress_bar& progress) {
   Mesh mesh;
   CGAL::PR_star_octree::IO::read_tetrahedral_mesh(file, mesh);
   progress.finish();
+  if (!mesh.skipped_cells.empty()) { // what the file has beyond tetrahedra is not lost silently
+    std::string what;
+    for (const auto& c : mesh.skipped_cells)
+      what += (what.empty() ? "" : ", ") + std::to_string(c.second) + " " + c.first +
+              (c.second == 1 ? "" : "(s)");
+    std::cerr << "prstar: " << file << ": note: " << mesh.tetrahedra.size()
+              << " tetrahedra kept; skipped the other cells: " << what << '\n';
+  }
   return mesh;
 }
 
