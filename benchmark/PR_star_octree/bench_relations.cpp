@@ -12,7 +12,7 @@
 // Each structure is built and queried in a child process (fork), so that its peak RSS is its own.
 // Times are the minimum of several repetitions after a warm-up.
 //
-// usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--no-cgal] [--csv OUT.csv] MESH...
+// usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--csv OUT.csv] MESH...
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/IO.h>
@@ -28,6 +28,9 @@
 #include "baselines/Extended_IA.h"
 #include "baselines/curvature_baselines.h"
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -224,6 +227,7 @@ int main(int argc, char** argv) {
   std::vector<std::size_t> kvs = {10, 20, 50, 100, 200, 400, 800, Octree::infinite_bucket_size};
   int reps = 3;
   bool with_cgal = true;
+  int threads = 0; // 0: TBB's default (every core)
   std::string csv_file;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
@@ -234,21 +238,29 @@ int main(int argc, char** argv) {
       csv_file = argv[++i];
     else if (a == "--no-cgal")
       with_cgal = false;
+    else if (a == "--threads" && i + 1 < argc)
+      threads = std::max(1, std::atoi(argv[++i]));
     else if (a == "--kv" && i + 1 < argc) {
       kvs = prstar_bench::parse_kv_list(argv[++i]);
     } else if (!a.empty() && a[0] == '-') {
-      std::cerr
-          << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--no-cgal] [--csv OUT.csv] MESH...\n";
+      std::cerr << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--csv "
+                   "OUT.csv] MESH...\n";
       return 2;
     } else
       files.push_back(a);
   }
   if (files.empty()) {
-    std::cerr
-        << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--no-cgal] [--csv OUT.csv] MESH...\n";
+    std::cerr << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--csv "
+                 "OUT.csv] MESH...\n";
     return 2;
   }
 
+#ifdef CGAL_LINKED_WITH_TBB
+  // The leaf-streaming algorithms run on every core by default; --threads 1 is the sequential run.
+  std::unique_ptr<tbb::global_control> limit;
+  if (threads > 0)
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+#endif
   std::ostringstream csv;
   csv << "mesh,vertices,tetrahedra,structure,order,kv,nodes,leaves,chi,cost_overhead_per_vertex,"
          "cost_total_per_vertex,bytes,overhead_bytes,bytes_per_tet,peak_rss_bytes,build_seconds,vt_seconds,"

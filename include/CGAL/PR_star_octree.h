@@ -167,10 +167,9 @@ public:
   const std::vector<double>& scalars() const { return scalars_; }
   /// whether the input mesh gave one label per tetrahedron (e.g. subdomain indices)
   bool has_tetrahedron_labels() const { return has_labels_; }
-  /// the label of tetrahedron `t` (new numbering), or 0 without labels
-  int tetrahedron_label(Index t) const { return labels_.empty() ? 0 : labels_[t]; }
-  /// one label per tetrahedron (new numbering), or empty
-  const std::vector<int>& tetrahedron_labels() const { return labels_; }
+  /// the label of tetrahedron `t` (new numbering), or 0 without labels (a mesh whose tetrahedra
+  /// all have the same label stores it once)
+  int tetrahedron_label(Index t) const { return labels_.empty() ? uniform_label_ : labels_[t]; }
   double scalar(Index v) const { return scalars_[v]; }
   const Geom_traits& geom_traits() const { return gt_; }
   /// the Cartesian coordinates of `p` as `double`s, through the traits' `Compute_x_3`,
@@ -329,7 +328,8 @@ private:
 
   std::vector<Point_3> points_;
   std::vector<double> scalars_;
-  std::vector<int> labels_;
+  std::vector<int> labels_; // empty when every tetrahedron has `uniform_label_`
+  int uniform_label_ = 0;
   bool has_labels_ = false;
   std::vector<Tetrahedron> tetrahedra_;
   std::vector<Node> nodes_;

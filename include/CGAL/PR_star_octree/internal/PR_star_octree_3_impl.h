@@ -216,8 +216,17 @@ void PR_star_octree_3<GT, I>::build_tetrahedra(const InputMesh& input,
   if constexpr (PR_star_octree::internal::has_tetrahedron_labels<InputMesh>::value) {
     if (input.has_tetrahedron_labels()) {
       has_labels_ = true;
-      labels_.resize(nt);
-      for (std::size_t t = 0; t < nt; ++t) labels_[t] = input.tetrahedron_label(tetrahedron_to_original_[t]);
+      bool uniform = true;
+      const int first = nt ? static_cast<int>(input.tetrahedron_label(0)) : 0;
+      for (std::size_t t = 1; t < nt && uniform; ++t)
+        uniform = static_cast<int>(input.tetrahedron_label(t)) == first;
+      if (uniform) // one subdomain: one value, not |T|
+        uniform_label_ = first;
+      else {
+        labels_.resize(nt);
+        for (std::size_t t = 0; t < nt; ++t)
+          labels_[t] = input.tetrahedron_label(tetrahedron_to_original_[t]);
+      }
     }
   }
 }
@@ -319,6 +328,8 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
   s.bytes.scalars = scalars_.capacity() * sizeof(double);
   s.bytes.labels = labels_.capacity() * sizeof(int);
   for (int l : labels_) ++s.subdomains[l];
+  if (has_labels_ && labels_.empty() && !tetrahedra_.empty())
+    s.subdomains[uniform_label_] = tetrahedra_.size();
   s.bytes.tetrahedra = tetrahedra_.capacity() * sizeof(Tetrahedron);
   s.bytes.nodes = nodes_.capacity() * sizeof(Node) + leaves_.capacity() * sizeof(Node_index);
   s.bytes.leaf_tetrahedra = leaf_tetrahedra_.capacity() * sizeof(Index);
