@@ -16,20 +16,26 @@
 namespace CGAL {
 namespace PR_star_octree {
 
+// The package's own named parameters, listed once: X(name) for each.
+#define CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(X)                                                            \
+  X(bucket_size)                                                                                             \
+  X(maximum_depth)                                                                                           \
+  X(check_links)                                                                                             \
+  X(with_boundary_triangles)                                                                                 \
+  X(boundary_triangles_output)                                                                               \
+  X(target_fraction)                                                                                         \
+  X(max_edge_length)                                                                                         \
+  X(max_rounds)                                                                                              \
+  X(priority)                                                                                                \
+  X(progress)                                                                                                \
+  X(domain_curvature_map)                                                                                    \
+  X(vertex_type_map)
+
 namespace internal_np {
 // The tags of the package's own named parameters (CGAL's tags live in `CGAL::internal_np`).
-enum bucket_size_t { bucket_size };
-enum maximum_depth_t { maximum_depth };
-enum check_links_t { check_links };
-enum with_boundary_triangles_t { with_boundary_triangles };
-enum boundary_triangles_output_t { boundary_triangles_output };
-enum target_fraction_t { target_fraction };
-enum max_edge_length_t { max_edge_length };
-enum max_rounds_t { max_rounds };
-enum priority_t { priority };
-enum progress_t { progress };
-enum domain_curvature_map_t { domain_curvature_map };
-enum vertex_type_map_t { vertex_type_map };
+#define CGAL_PR_STAR_OCTREE_TAG(NAME) enum NAME##_t{NAME};
+CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_TAG)
+#undef CGAL_PR_STAR_OCTREE_TAG
 } // namespace internal_np
 
 /// \ingroup PkgPRStarOctreeRef
@@ -77,18 +83,7 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base> {
     return Named_parameters<K, internal_np::NAME##_t, Named_parameters>(k, *this);                           \
   }
   /// \cond SKIP_IN_MANUAL
-  CGAL_PR_STAR_OCTREE_PARAMETER(bucket_size)
-  CGAL_PR_STAR_OCTREE_PARAMETER(maximum_depth)
-  CGAL_PR_STAR_OCTREE_PARAMETER(check_links)
-  CGAL_PR_STAR_OCTREE_PARAMETER(with_boundary_triangles)
-  CGAL_PR_STAR_OCTREE_PARAMETER(boundary_triangles_output)
-  CGAL_PR_STAR_OCTREE_PARAMETER(target_fraction)
-  CGAL_PR_STAR_OCTREE_PARAMETER(max_edge_length)
-  CGAL_PR_STAR_OCTREE_PARAMETER(max_rounds)
-  CGAL_PR_STAR_OCTREE_PARAMETER(priority)
-  CGAL_PR_STAR_OCTREE_PARAMETER(progress)
-  CGAL_PR_STAR_OCTREE_PARAMETER(domain_curvature_map)
-  CGAL_PR_STAR_OCTREE_PARAMETER(vertex_type_map)
+  CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_PARAMETER)
   /// \endcond
 #undef CGAL_PR_STAR_OCTREE_PARAMETER
 };
@@ -99,18 +94,7 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base> {
   Named_parameters<K, internal_np::NAME##_t> NAME(const K& k) {                                              \
     return Named_parameters<K, internal_np::NAME##_t>(k);                                                    \
   }
-CGAL_PR_STAR_OCTREE_PARAMETER(bucket_size)
-CGAL_PR_STAR_OCTREE_PARAMETER(maximum_depth)
-CGAL_PR_STAR_OCTREE_PARAMETER(check_links)
-CGAL_PR_STAR_OCTREE_PARAMETER(with_boundary_triangles)
-CGAL_PR_STAR_OCTREE_PARAMETER(boundary_triangles_output)
-CGAL_PR_STAR_OCTREE_PARAMETER(target_fraction)
-CGAL_PR_STAR_OCTREE_PARAMETER(max_edge_length)
-CGAL_PR_STAR_OCTREE_PARAMETER(max_rounds)
-CGAL_PR_STAR_OCTREE_PARAMETER(priority)
-CGAL_PR_STAR_OCTREE_PARAMETER(progress)
-CGAL_PR_STAR_OCTREE_PARAMETER(domain_curvature_map)
-CGAL_PR_STAR_OCTREE_PARAMETER(vertex_type_map)
+CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_PARAMETER)
 #undef CGAL_PR_STAR_OCTREE_PARAMETER
 /// \endcond
 
