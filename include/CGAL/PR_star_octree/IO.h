@@ -63,8 +63,8 @@ inline bool is_readable_extension(const std::string& filename) {
 /// extension with its dot; case-insensitive).
 inline bool is_writable_extension(const std::string& filename) {
   const std::string e = internal::lower_extension(filename);
-  return e == "mesh" || e == "vtu" || e == "vtk" || e == "off" || e == "ts" || e == "msh" || e == "meshb" || e == "node" ||
-         e == "ele";
+  return e == "mesh" || e == "vtu" || e == "vtk" || e == "off" || e == "ts" || e == "msh" || e == "meshb" ||
+         e == "node" || e == "ele";
 }
 
 /// \ingroup PkgPRStarOctreeIO

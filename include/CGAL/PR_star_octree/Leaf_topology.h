@@ -242,7 +242,8 @@ void for_each_leaf(const PR_star_octree_3<GT, I>& tree, unsigned relations, Func
 /// The star of vertex `v` (VT), by random access: finds the leaf of `v` and scans its list.
 /// Appends tetrahedron indices in increasing order to `out`.
 template <class GT, class I, class OutputIterator>
-OutputIterator vertex_star(const PR_star_octree_3<GT, I>& tree, I v, OutputIterator out) {
+OutputIterator vertex_star(const PR_star_octree_3<GT, I>& tree, typename PR_star_octree_3<GT, I>::Index v,
+                           OutputIterator out) {
   for (auto t : tree.leaf_tetrahedra(tree.leaf_of_vertex(v))) {
     const auto& c = tree.tetrahedron(t);
     if (c[0] == v || c[1] == v || c[2] == v || c[3] == v) *out++ = t;
@@ -254,7 +255,8 @@ OutputIterator vertex_star(const PR_star_octree_3<GT, I>& tree, I v, OutputItera
 /// The tetrahedra across the four faces of tetrahedron `t` (TT), by random access:
 /// `[k]` is across the face opposite vertex `k`, or `Leaf_topology<Octree>::no_neighbor`.
 template <class GT, class I>
-std::array<I, 4> tetrahedron_neighbors(const PR_star_octree_3<GT, I>& tree, I t) {
+std::array<I, 4> tetrahedron_neighbors(const PR_star_octree_3<GT, I>& tree,
+                                       typename PR_star_octree_3<GT, I>::Index t) {
   using Octree = PR_star_octree_3<GT, I>;
   using Index = I;
   std::array<Index, 4> result;

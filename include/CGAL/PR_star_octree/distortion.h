@@ -47,7 +47,8 @@ struct Vertex_curvature {
 /// index (`std::size_t`) with value `double`: the scalar field of the input mesh
 /// (`scalar_field_map()`) or a coordinate (`coordinate_field_map()`).  The functions of this header
 /// read it in the octree's numbering directly; `get()` with a user index builds the inverse vertex
-/// permutation once, on first use.
+/// permutation once, on first use (that first call must not race with others: call it once before
+/// sharing a map between threads).
 template <class Octree>
 class Octree_field_map {
 public:
@@ -285,7 +286,8 @@ Vertex_type_counts compute_discrete_distortion(const PR_star_octree_3<GT, I>& tr
 /// \ingroup PkgPRStarOctreeRef
 /// The curvature at one vertex `v` (octree numbering): builds the local structure of its leaf only.
 template <class GT, class I, class FieldMap>
-Vertex_curvature curvature_at(const PR_star_octree_3<GT, I>& tree, I v, const FieldMap& field) {
+Vertex_curvature curvature_at(const PR_star_octree_3<GT, I>& tree, typename PR_star_octree_3<GT, I>::Index v,
+                              const FieldMap& field) {
   using Octree = PR_star_octree_3<GT, I>;
   Leaf_topology<Octree> local(tree, tree.leaf_of_vertex(v), VERTEX_TETRAHEDRA);
   Vertex_classifier<Octree> classifier;

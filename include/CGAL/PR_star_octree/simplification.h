@@ -202,7 +202,9 @@ auto simplify(const Indexed_tetrahedral_mesh<P, I>& mesh, const NP& np = paramet
 /// independently, with the same code as `simplify()` (for tests and diagnostics; `O(|T|)` for
 /// the vertex types).
 template <class GT, class I>
-Collapse_check check_half_edge_collapse(const PR_star_octree_3<GT, I>& tree, I v1, I v2) {
+Collapse_check check_half_edge_collapse(const PR_star_octree_3<GT, I>& tree,
+                                        typename PR_star_octree_3<GT, I>::Index v1,
+                                        typename PR_star_octree_3<GT, I>::Index v2) {
   using Index = I;
   Collapse_check r;
   internal::Collapse_tester<GT, Index> tester;
