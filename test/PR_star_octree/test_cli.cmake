@@ -124,6 +124,23 @@ run(0 "boundary triangles" "" boundary ${DATA}/torus.mesh --kv 7)
 run(nonzero "" "exists.*--force" boundary ${DATA}/sphere.mesh -o ${WORK}/sphere_boundary.vtu)
 run(nonzero "" "must be a .vtu, .vtk, .node or .ele file" boundary ${DATA}/sphere.mesh -o ${WORK}/sphere_boundary.mesh)
 
+# generate --shape lattice (issue 10): the streamed VTU is read back with the closed-form counts of
+# a 6 x 6 x 6 Kuhn lattice: (N+1)^3 vertices, 6 N^3 tetrahedra, 12 N^2 boundary triangles, a ball
+# (Euler characteristic 1), every tetrahedron positive, (N-1)^3 interior vertices.
+run(0 "\"tetrahedra\": 1296" "" generate --shape lattice --cells 6 -o ${WORK}/lattice.vtu --json)
+run(0 "" "" stats ${WORK}/lattice.vtu --json)
+foreach(pair "vertices\": 343," "tetrahedra\": 1296," "boundary_triangles\": 432," "euler_characteristic\": 1,"
+        "reoriented_tetrahedra\": 0,")
+  if(NOT last_out MATCHES "\"${pair}")
+    message(SEND_ERROR "lattice stats: expected ${pair} in ${last_out}")
+  endif()
+endforeach()
+run(0 "\"interior_vertices\": 125," "" boundary ${WORK}/lattice.vtu --json)
+run(0 "\"valid\": true" "" validate ${WORK}/lattice.vtu --json)
+run(2 "" "--cells must be" generate --shape lattice --cells 0 -o ${WORK}/lattice0.vtu)
+run(2 "" "must be a .vtu" generate --shape lattice --cells 3 -o ${WORK}/lattice3.mesh)
+run(2 "" "--cells only" generate --shape lattice --cells 3 --cell-size 0.1 -o ${WORK}/lattice3.vtu)
+
 # Labels (issue 12): the Medit references of a Mesh_3 file are subdomain labels; stats reports the
 # tetrahedra of each, they add up to |T|; boundary, curvature and simplify write them in every
 # format that keeps labels, and the point arrays in every format that keeps point data.

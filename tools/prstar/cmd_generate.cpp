@@ -5,13 +5,67 @@
 
 #include "commands.h"
 #include "generate.h"
+#include "lattice.h"
 
 #include <chrono>
+#include <fstream>
 #include <iostream>
 
 namespace prstar {
 
 namespace {
+
+bool is_lattice(const Options& o) {
+  return o.get("--shape") == "lattice";
+}
+
+// The lattice's options, checked before anything runs.
+Lattice lattice_options(const Options& o) {
+  if (!o.has("--cells")) throw Usage_error("--shape lattice needs --cells N");
+  if (o.has("--cell-size") || o.has("--surface") || o.flag("--tetgen") || o.has("--facet-size") ||
+      o.has("--facet-distance"))
+    throw Usage_error("--shape lattice takes --cells only (no mesher options)");
+  const double cells = o.get_double("--cells", 0);
+  if (!(cells >= 1) || cells != static_cast<double>(static_cast<std::size_t>(cells)) || cells > 2000)
+    throw Usage_error("--cells must be an integer from 1 to 2000");
+  if (o.output().size() < 4 || o.output().compare(o.output().size() - 4, 4, ".vtu") != 0)
+    throw Usage_error("--shape lattice streams a binary VTU: the output must be a .vtu file");
+  Lattice l;
+  l.cells = static_cast<std::size_t>(cells);
+  return l;
+}
+
+int run_lattice(const Options& o) {
+  const Lattice lattice = lattice_options(o);
+  const std::string out = o.output();
+  Progress_bar progress(o.show_progress());
+  const auto start = std::chrono::steady_clock::now();
+  progress.phase("writing the lattice to " + out);
+  write_through_temporary(out, [&](const std::string& tmp) {
+    std::ofstream f(tmp, std::ios::binary);
+    if (!f) throw std::runtime_error(tmp + ": cannot open for writing");
+    write_lattice_vtu(f, lattice, progress.callback());
+    f.close();
+    if (!f) throw std::runtime_error(tmp + ": cannot write");
+  });
+  progress.finish();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (o.json()) {
+    Json j;
+    j.begin_object()
+        .field("output", out)
+        .field("mesher", "lattice")
+        .field("vertices", lattice.number_of_vertices())
+        .field("tetrahedra", lattice.number_of_tetrahedra())
+        .field("seconds", seconds)
+        .end_object();
+    std::cout << j.str() << '\n';
+  } else if (o.show_summary())
+    std::cout << out << ": " << lattice.number_of_vertices() << " vertices, "
+              << lattice.number_of_tetrahedra() << " tetrahedra (Kuhn lattice, " << fixed(seconds, 2)
+              << " s)\n";
+  return exit_success;
+}
 
 // The mesher's options, checked before anything runs.
 Generate_options generate_options(const Options& o) {
@@ -33,6 +87,7 @@ Generate_options generate_options(const Options& o) {
 }
 
 int run_generate(const Options& o) {
+  if (is_lattice(o)) return run_lattice(o);
   const Generate_options opt = generate_options(o);
   const std::string out = o.output();
   Progress_bar progress(o.show_progress());
@@ -62,6 +117,8 @@ int run_generate(const Options& o) {
 std::string shape_list() {
   std::string s = "\nshapes:\n";
   for (const auto& shape : implicit_shapes()) s += "  " + shape.first + ": " + shape.second + '\n';
+  s += "  lattice: with --cells N, a jittered N x N x N Kuhn lattice (6 N^3 tetrahedra, point array\n"
+       "           `scalar`) streamed to a binary .vtu without holding the mesh (for huge inputs)\n";
   return s;
 }
 
@@ -70,7 +127,7 @@ std::string shape_list() {
 Command generate_command() {
   return Command("generate", "make a tetrahedral mesh with CGAL Mesh_3 or TetGen")
       .synopsis("(--shape NAME | --surface FILE.off) --cell-size S [--facet-size S] [--facet-distance D] "
-                "[--tetgen]")
+                "[--tetgen] | --shape lattice --cells N")
       .description(
           R"(Makes a tetrahedral mesh with CGAL Mesh_3 (default) or TetGen (--tetgen) and writes it to OUT.)")
       .option("--shape", "NAME", "an implicit domain (see the list below)")
@@ -79,10 +136,16 @@ Command generate_command() {
       .option("--facet-size", "S", "target surface triangle size (default: the cell size)")
       .option("--facet-distance", "D", "surface approximation error (default: cell size / 10)")
       .flag("--tetgen", "mesh the same surface with TetGen (quality, max volume from the cell size)")
+      .option("--cells", "N", "--shape lattice: N^3 cubes of 6 tetrahedra each")
       .output("OUT", "", "write the mesh to OUT", true)
-      .json_keys("keys: output, mesher (mesh_3 or tetgen), vertices, tetrahedra, seconds")
+      .json_keys("keys: output, mesher (mesh_3, tetgen or lattice), vertices, tetrahedra, seconds")
       .quiet_silences_summary()
-      .check([](const Options& o) { generate_options(o); })
+      .check([](const Options& o) {
+        if (is_lattice(o))
+          lattice_options(o);
+        else
+          generate_options(o);
+      })
       .epilog(shape_list)
       .run(run_generate);
 }
