@@ -226,9 +226,14 @@ int main() {
   const auto out_validity = PSO::check_validity(out_points, result.mesh.tetrahedra);
   CHECK(out_validity.valid);
   CHECK_EQUAL(out_validity.euler_characteristic, 1LL);
-  const auto check = PSO::check_half_edge_collapse(
-      tree, Octree::Index(0), tree.tetrahedron(*tree.leaf_tetrahedra(tree.leaves()[0]).begin())[1]);
-  CHECK(check.edge_exists || !check.allowed());
+  // The collapse test through the traits, on an edge of the first tetrahedron, and on a vertex with
+  // itself (no edge: UBSan once caught the fan code reading past a 2-array there).
+  const auto& first = tree.tetrahedron(*tree.leaf_tetrahedra(tree.leaves()[0]).begin());
+  const auto check = PSO::check_half_edge_collapse(tree, first[0], first[1]);
+  CHECK(check.edge_exists);
+  CHECK(check.allowed() == (check.boundary && check.geometry && check.link));
+  const auto self = PSO::check_half_edge_collapse(tree, first[0], first[0]);
+  CHECK(!self.edge_exists && !self.allowed());
 
   return prstar_test::summary("test_custom_traits");
 }

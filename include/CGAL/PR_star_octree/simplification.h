@@ -212,7 +212,7 @@ Collapse_check check_half_edge_collapse(const PR_star_octree_3<GT, I>& tree,
   vertex_star(tree, v1, std::back_inserter(st1));
   vertex_star(tree, v2, std::back_inserter(st2));
   tester.edge_star(tree.tetrahedra(), st2, v1, st_e);
-  r.edge_exists = !st_e.empty();
+  r.edge_exists = v1 != v2 && !st_e.empty(); // a vertex with itself is no edge
   if (!r.edge_exists) return r;
   std::vector<Vertex_type> types;
   internal::classify_vertices<CGAL::Sequential_tag>(

@@ -15,6 +15,8 @@
 //   - the vertex-vertex relation of a star.
 // Tetrahedra are `std::array<Index, 4>`, positively oriented, looked up by index in an array `T`.
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -214,6 +216,7 @@ public:
     for (Index t : star) {
       const auto& c = T[t];
       const int p0 = position(c, v0), p1 = position(c, v1);
+      CGAL_precondition(v0 != v1 && p0 >= 0 && p1 >= 0); // every tetrahedron of the star holds the edge
       Index w[2];
       int pw[2], n = 0;
       for (int k = 0; k < 4; ++k)
