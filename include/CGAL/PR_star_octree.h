@@ -120,7 +120,8 @@ public:
   /// @{
 
   /// Builds the PR-star octree of `input`, a model of `PRStarOctreeInputMesh`
-  /// (see `CGAL::PR_star_octree::make_input()`).
+  /// (see `CGAL::PR_star_octree::make_input()`).  The points, tetrahedra, scalars and labels are
+  /// copied; `input` is not changed.
   ///
   /// \param input the mesh
   /// \param bucket_size the bucket threshold `k_v` (at least 1), or `infinite_bucket_size`
@@ -134,24 +135,60 @@ public:
                             std::size_t max_depth = default_max_depth, const Geom_traits& gt = Geom_traits())
       : gt_(gt), bucket_size_(bucket_size), max_depth_(max_depth) {
     static_assert(PR_star_octree::internal::Check_input_mesh<InputMesh, Point_3>::value, "");
-    if (bucket_size_ == 0)
-      throw std::invalid_argument("PR_star_octree_3: the bucket size k_v must be at least 1");
-    build(input);
+    check_bucket_size();
+    copy_input(input);
+    build_in_place<CGAL::Parallel_if_available_tag>();
   }
 
-  /// Builds the PR-star octree of `input` with named parameters: `bucket_size` (default 50),
-  /// `maximum_depth` (default 32), `geom_traits` (default `Geom_traits()`); see
-  /// `CGAL::PR_star_octree::parameters`.
+  /// Builds the PR-star octree of `input` (copied, as above) with named parameters:
+  /// - `bucket_size` (default 50), `maximum_depth` (default 32), `geom_traits` (default `Geom_traits()`);
+  /// - `tetrahedron_permutation(bool)` (default `true`): whether the new -> original tetrahedron
+  ///   numbering is kept (one index per tetrahedron; without it `original_tetrahedron()` is not
+  ///   available, `original_tetrahedron_vertices()` and everything per vertex still are);
+  /// - `concurrency_tag(tag)` (default `CGAL::Parallel_if_available_tag()`): `CGAL::Parallel_tag`
+  ///   builds with several threads (TBB), `CGAL::Sequential_tag` with one; the octree is the same.
+  ///
+  /// See `CGAL::PR_star_octree::parameters`.
   template <class InputMesh, class T, class Tag, class Base>
   PR_star_octree_3(const InputMesh& input, const CGAL::Named_function_parameters<T, Tag, Base>& np)
-      : PR_star_octree_3(
-            input,
-            parameters::choose_parameter(
-                parameters::get_parameter(np, PR_star_octree::internal_np::bucket_size), default_bucket_size),
-            parameters::choose_parameter(
-                parameters::get_parameter(np, PR_star_octree::internal_np::maximum_depth), default_max_depth),
-            parameters::choose_parameter(parameters::get_parameter(np, internal_np::geom_traits),
-                                         Geom_traits())) {}
+      : gt_(parameters::choose_parameter(parameters::get_parameter(np, internal_np::geom_traits),
+                                         Geom_traits())),
+        bucket_size_(parameters::choose_parameter(
+            parameters::get_parameter(np, PR_star_octree::internal_np::bucket_size), default_bucket_size)),
+        max_depth_(parameters::choose_parameter(
+            parameters::get_parameter(np, PR_star_octree::internal_np::maximum_depth), default_max_depth)),
+        keep_tetrahedron_permutation_(parameters::choose_parameter(
+            parameters::get_parameter(np, PR_star_octree::internal_np::tetrahedron_permutation), true)) {
+    static_assert(PR_star_octree::internal::Check_input_mesh<InputMesh, Point_3>::value, "");
+    check_bucket_size();
+    copy_input(input);
+    build_with(np);
+  }
+
+  /// Builds the PR-star octree of `mesh` without copying it (lean construction, for big meshes):
+  /// its points, tetrahedra, first point-data array (the scalar field) and labels are moved into the
+  /// octree and permuted there in place; they are removed from `mesh`, whose other arrays
+  /// (other point data, cell data, label names) are left as they were.  The peak memory of the
+  /// construction is the final structure plus about one index per tetrahedron.  Named parameters
+  /// as in the other constructor.
+  ///
+  /// \throws std::invalid_argument as the other constructor, or if the scalar field or the labels
+  ///         do not have one value per vertex or tetrahedron; `mesh` has then lost its moved arrays.
+  template <class NP = parameters::Default_named_parameters>
+  explicit PR_star_octree_3(PR_star_octree::Indexed_tetrahedral_mesh<Point_3, Index>&& mesh,
+                            const NP& np = parameters::default_values())
+      : gt_(parameters::choose_parameter(parameters::get_parameter(np, internal_np::geom_traits),
+                                         Geom_traits())),
+        bucket_size_(parameters::choose_parameter(
+            parameters::get_parameter(np, PR_star_octree::internal_np::bucket_size), default_bucket_size)),
+        max_depth_(parameters::choose_parameter(
+            parameters::get_parameter(np, PR_star_octree::internal_np::maximum_depth), default_max_depth)),
+        keep_tetrahedron_permutation_(parameters::choose_parameter(
+            parameters::get_parameter(np, PR_star_octree::internal_np::tetrahedron_permutation), true)) {
+    check_bucket_size();
+    take_mesh(std::move(mesh));
+    build_with(np);
+  }
   /// @}
 
   /// \name The mesh (new numbering)
@@ -261,11 +298,18 @@ public:
   /// @{
   /// the original index of vertex `v`
   Index original_vertex(Index v) const { return vertex_to_original_[v]; }
+  /// whether the new -> original tetrahedron numbering was kept (named parameter
+  /// `tetrahedron_permutation`, default `true`)
+  bool has_tetrahedron_permutation() const { return keep_tetrahedron_permutation_; }
   /// the original index of tetrahedron `t`
-  Index original_tetrahedron(Index t) const { return tetrahedron_to_original_[t]; }
+  /// \pre `has_tetrahedron_permutation()`
+  Index original_tetrahedron(Index t) const {
+    CGAL_precondition(has_tetrahedron_permutation());
+    return tetrahedron_to_original_[t];
+  }
   /// new -> original vertex indices (a permutation of `[0, |V|)`)
   const std::vector<Index>& vertex_permutation() const { return vertex_to_original_; }
-  /// new -> original tetrahedron indices
+  /// new -> original tetrahedron indices (empty without `has_tetrahedron_permutation()`)
   const std::vector<Index>& tetrahedron_permutation() const { return tetrahedron_to_original_; }
   /// whether tetrahedron `t` was negatively oriented as the user listed it
   bool is_reoriented(Index t) const { return (reoriented_[t >> 6] >> (t & 63)) & 1u; }
@@ -278,7 +322,8 @@ public:
   }
   /// original -> new vertex indices (computed, `O(|V|)`)
   std::vector<Index> vertex_from_original() const { return inverse(vertex_to_original_); }
-  /// original -> new tetrahedron indices (computed, `O(|T|)`)
+  /// original -> new tetrahedron indices (computed, `O(|T|)`; empty without
+  /// `has_tetrahedron_permutation()`)
   std::vector<Index> tetrahedron_from_original() const { return inverse(tetrahedron_to_original_); }
   /// @}
 
@@ -308,16 +353,32 @@ private:
     return inv;
   }
 
+  void check_bucket_size() const {
+    if (bucket_size_ == 0)
+      throw std::invalid_argument("PR_star_octree_3: the bucket size k_v must be at least 1");
+  }
+  template <class NP>
+  void build_with(const NP&) {
+    using Tag = typename internal_np::Lookup_named_param_def<PR_star_octree::internal_np::concurrency_tag_t,
+                                                             NP, CGAL::Parallel_if_available_tag>::type;
+    build_in_place<Tag>();
+  }
+  void check_sizes(std::size_t nv, std::size_t nt) const;
   template <class InputMesh>
-  void build(const InputMesh& input);
-  void split_vertices(const std::vector<std::array<double, 3>>& xyz, std::vector<Index>& order);
-  template <class InputMesh>
-  void build_tetrahedra(const InputMesh& input, const std::vector<Index>& vertex_from_original);
+  void copy_input(const InputMesh& input);
+  void take_mesh(PR_star_octree::Indexed_tetrahedral_mesh<Point_3, Index>&& mesh);
+  void set_labels_uniform_if_possible();
+  template <class ConcurrencyTag>
+  void build_in_place();
+  void split_vertices(std::vector<Index>& order);
+  template <class ConcurrencyTag>
+  void sort_and_orient_tetrahedra(const std::vector<Index>& from_original);
   void build_leaf_lists();
 
   Geom_traits gt_;
   std::size_t bucket_size_;
   std::size_t max_depth_;
+  bool keep_tetrahedron_permutation_ = true;
   std::size_t depth_ = 0;
   std::size_t depth_limited_leaves_ = 0;
   std::size_t coincident_leaves_ = 0;

@@ -18,6 +18,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <numeric>
 #include <random>
 #include <set>
 #include <string>
@@ -218,6 +219,88 @@ void check_shuffle_invariance(const Mesh& mesh, std::size_t kv, const std::strin
   CHECK_EQUAL(a.statistics().chi, b.statistics().chi);
 }
 
+// The lean construction (the mesh moved in, permuted in place), without the tetrahedron
+// permutation, sequential and parallel: checked against brute force like the copying one, and the
+// same structure as the copying one, array for array.
+void check_lean_construction(const Mesh& mesh, std::size_t kv, const std::string& what) {
+  namespace params = CGAL::PR_star_octree::parameters;
+  using Tree = CGAL::PR_star_octree_3<>;
+  const prstar_test::Failure_context context(what + " (lean)");
+  Mesh labelled = mesh; // labels of three values, so that they are stored per tetrahedron
+  labelled.tetrahedron_labels.resize(mesh.tetrahedra.size());
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) labelled.tetrahedron_labels[t] = int(t % 3) - 1;
+  labelled.point_data.push_back({"second", std::vector<double>(mesh.points.size(), 2.5)});
+  const auto in = CGAL::PR_star_octree::make_input(labelled);
+  const Tree a(in, params::bucket_size(kv));
+
+  Mesh moved = labelled;
+  const Tree b(std::move(moved), params::bucket_size(kv));
+  CHECK(moved.points.empty() && moved.tetrahedra.empty() && moved.tetrahedron_labels.empty());
+  CHECK_EQUAL(moved.point_data.size(), labelled.point_data.size() - 1); // the scalar field moved out
+  CHECK(b.has_tetrahedron_permutation());
+  check_invariants(b, in, what + " (moved in)");
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
+    CHECK_EQUAL(b.tetrahedron_label(Tree::Index(t)),
+                labelled.tetrahedron_labels[b.original_tetrahedron(Tree::Index(t))]);
+
+  for (int parallel = 0; parallel < 2; ++parallel) {
+    Mesh m = labelled;
+    const auto np = params::bucket_size(kv).tetrahedron_permutation(false);
+    const Tree c = parallel ? Tree(std::move(m), np.concurrency_tag(CGAL::Parallel_if_available_tag()))
+                            : Tree(std::move(m), np.concurrency_tag(CGAL::Sequential_tag()));
+    CHECK(!c.has_tetrahedron_permutation());
+    CHECK(c.tetrahedron_permutation().empty());
+    CHECK(c.points() == a.points());
+    CHECK(c.scalars() == a.scalars());
+    CHECK(c.tetrahedra() == a.tetrahedra());
+    CHECK(c.vertex_permutation() == a.vertex_permutation());
+    CHECK(c.shared_tetrahedra_array() == a.shared_tetrahedra_array());
+    CHECK(c.leaves() == a.leaves());
+    CHECK_EQUAL(c.number_of_nodes(), a.number_of_nodes());
+    bool same_nodes = true, same_labels = true, same_user_tetrahedra = true;
+    for (std::size_t n = 0; n < a.number_of_nodes(); ++n) {
+      const auto &x = a.node(Tree::Node_index(n)), &y = c.node(Tree::Node_index(n));
+      same_nodes = same_nodes && x.vertex_begin == y.vertex_begin && x.vertex_end == y.vertex_end &&
+                   x.owned_begin == y.owned_begin && x.owned_end == y.owned_end &&
+                   x.shared_begin == y.shared_begin && x.shared_end == y.shared_end &&
+                   x.first_child == y.first_child && x.parent == y.parent;
+    }
+    for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
+      same_labels = same_labels && c.tetrahedron_label(Tree::Index(t)) == a.tetrahedron_label(Tree::Index(t));
+      same_user_tetrahedra = same_user_tetrahedra &&
+                             c.original_tetrahedron_vertices(Tree::Index(t)) ==
+                                 a.original_tetrahedron_vertices(Tree::Index(t)) &&
+                             c.is_reoriented(Tree::Index(t)) == a.is_reoriented(Tree::Index(t));
+    }
+    CHECK(same_nodes);
+    CHECK(same_labels);
+    CHECK(same_user_tetrahedra);
+    const auto sa = a.statistics(), sc = c.statistics();
+    CHECK_EQUAL(sc.reoriented_tetrahedra, sa.reoriented_tetrahedra);
+    CHECK_EQUAL(sc.degenerate_tetrahedra, sa.degenerate_tetrahedra);
+    CHECK_EQUAL(sc.subdomains, sa.subdomains);
+    CHECK_EQUAL(sa.bytes.permutations - sc.bytes.permutations, mesh.tetrahedra.size() * sizeof(Tree::Index));
+  }
+}
+
+// The in-place gather against a plain one, on random permutations of several sizes.
+void test_gather_in_place() {
+  std::mt19937 rng(7);
+  for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(2), std::size_t(17), std::size_t(1000)}) {
+    for (int rep = 0; rep < 3; ++rep) {
+      std::vector<std::uint32_t> order(n);
+      std::iota(order.begin(), order.end(), 0u);
+      if (rep > 0) std::shuffle(order.begin(), order.end(), rng);
+      if (rep == 2 && n > 4) std::reverse(order.begin(), order.begin() + n / 2); // fixed points and cycles
+      std::vector<std::string> a(n), expected(n);
+      for (std::size_t i = 0; i < n; ++i) a[i] = "v" + std::to_string(i);
+      for (std::size_t i = 0; i < n; ++i) expected[i] = a[order[i]];
+      CGAL::PR_star_octree::internal::gather_in_place(a, order);
+      CHECK(a == expected);
+    }
+  }
+}
+
 // A hand-checked mesh: the unit cube split into 6 tetrahedra around the diagonal (0,0,0)-(1,1,1),
 // plus one tetrahedron listed with negative orientation and one unreferenced vertex.
 void test_hand_checked() {
@@ -337,6 +420,25 @@ void test_errors() {
   bad[2] = Point(0, std::nan(""), 0);
   CHECK_THROWS(std::invalid_argument, "vertex 2 has a non-finite coordinate",
                (void)Tree(CGAL::PR_star_octree::make_input(bad, ok)));
+
+  // The same refusals when the mesh is moved in, and arrays of the wrong size.
+  const auto moved = [&](std::vector<std::array<std::uint32_t, 4>> tets, std::size_t scalars,
+                         std::size_t labels) {
+    Mesh m;
+    m.points = pts;
+    m.tetrahedra = std::move(tets);
+    if (scalars) m.point_data.push_back({"f", std::vector<double>(scalars, 1.)});
+    m.tetrahedron_labels.assign(labels, 1);
+    return Tree(std::move(m));
+  };
+  CHECK_THROWS(std::invalid_argument, "tetrahedron 0 has vertex index 4 out of range",
+               (void)moved({{0, 1, 2, 4}}, 0, 0));
+  CHECK_THROWS(std::invalid_argument, "tetrahedron 1 lists vertex 1 twice",
+               (void)moved({{0, 1, 2, 3}, {0, 1, 1, 3}}, 0, 0));
+  CHECK_THROWS(std::invalid_argument, "the scalar field has 3 values for 4 vertices",
+               (void)moved({{0, 1, 2, 3}}, 3, 0));
+  CHECK_THROWS(std::invalid_argument, "2 labels for 1 tetrahedra", (void)moved({{0, 1, 2, 3}}, 4, 2));
+  CHECK_EQUAL(moved({{0, 1, 3, 2}}, 4, 1).statistics().reoriented_tetrahedra, std::size_t(1));
 }
 
 // Another traits class (a plain Cartesian kernel) and 64-bit indices, with a scalar field.
@@ -386,6 +488,7 @@ int main(int argc, char** argv) {
   test_duplicates_and_depth();
   test_errors();
   test_other_traits();
+  test_gather_in_place();
 
   // Generated meshes (CGAL Mesh_3 and TetGen, made by the test fixture).
   for (const char* name :
@@ -397,6 +500,8 @@ int main(int argc, char** argv) {
     CHECK(mesh.tetrahedra.size() > 1000);
     for (std::size_t kv : {std::size_t(1), std::size_t(7), std::size_t(50), std::size_t(400)})
       check_shuffle_invariance(mesh, kv, std::string(name) + " k_v=" + std::to_string(kv));
+    for (std::size_t kv : {std::size_t(1), std::size_t(50)})
+      check_lean_construction(mesh, kv, std::string(name) + " k_v=" + std::to_string(kv));
     test_table1_behaviour(mesh, name);
   }
 

@@ -31,27 +31,27 @@ int run_boundary(const Options& o) {
   Mesh mesh = read_mesh(input, progress); // written back with the computed point arrays
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
-  const Octree tree(CGAL::PR_star_octree::make_input(mesh),
-                    params::bucket_size(kv).maximum_depth(o.max_depth()));
+  // Without an output to write, the octree takes the mesh over (no second copy of V and T).
+  const auto np = params::bucket_size(kv).maximum_depth(o.max_depth()).tetrahedron_permutation(false);
+  const Octree tree =
+      out.empty() ? Octree(std::move(mesh), np) : Octree(CGAL::PR_star_octree::make_input(mesh), np);
+  const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("classifying the vertices");
-  std::vector<Vertex_type> types(mesh.points.size(), Vertex_type::UNREFERENCED); // the user's numbering
+  std::vector<Vertex_type> types(nv, Vertex_type::UNREFERENCED); // the user's numbering
   const CGAL::PR_star_octree::Boundary_counts b = CGAL::PR_star_octree::compute_boundary(
       tree, CGAL::make_property_map(types), params::progress(progress.callback()));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
   if (!out.empty()) {
     progress.phase("writing " + out);
-    CGAL::PR_star_octree::Point_data_array a{"boundary", std::vector<double>(mesh.points.size())};
+    CGAL::PR_star_octree::Point_data_array a{"boundary", std::vector<double>(nv)};
     for (std::size_t v = 0; v < types.size(); ++v) a.values[v] = vertex_type_code(types[v]);
     write_mesh_with_point_data(out, mesh, {a});
     progress.finish();
   }
   if (o.json()) {
     Json j;
-    j.begin_object()
-        .field("vertices", mesh.points.size())
-        .field("tetrahedra", mesh.tetrahedra.size())
-        .key("kv");
+    j.begin_object().field("vertices", nv).field("tetrahedra", nt).key("kv");
     json_kv(j, kv)
         .field("boundary_vertices", b.boundary_vertices)
         .field("interior_vertices", b.interior_vertices)
@@ -67,7 +67,7 @@ int run_boundary(const Options& o) {
     return exit_success;
   }
   Table t({"", "count"});
-  t.add({"vertices", std::to_string(mesh.points.size())});
+  t.add({"vertices", std::to_string(nv)});
   t.add({"  interior", std::to_string(b.interior_vertices)});
   t.add({"  boundary", std::to_string(b.boundary_vertices)});
   t.add({"  non-manifold", std::to_string(b.nonmanifold_vertices)});

@@ -24,6 +24,29 @@ namespace {
 using Octree = CGAL::PR_star_octree_3<>;
 namespace params = CGAL::PR_star_octree::parameters;
 
+// What the command keeps of each vertex's `Vertex_curvature` (40 bytes): the vertex code (1 byte),
+// the distortion and, for an output, the domain curvature; in the user's numbering.
+struct Curvature_arrays {
+  std::vector<std::uint8_t> code;
+  std::vector<double> distortion, domain;
+  Curvature_arrays(std::size_t nv, bool with_domain)
+      : code(nv, 3), distortion(nv, 0), domain(with_domain ? nv : 0) {}
+
+  struct Map { // a WritablePropertyMap; each vertex written once, by one thread
+    using key_type = std::size_t;
+    using value_type = CGAL::PR_star_octree::Vertex_curvature;
+    using reference = value_type;
+    using category = boost::writable_property_map_tag;
+    Curvature_arrays* a;
+    friend void put(const Map& m, std::size_t v, const value_type& c) {
+      m.a->code[v] = static_cast<std::uint8_t>(vertex_type_code(c.type));
+      m.a->distortion[v] = c.distortion;
+      if (!m.a->domain.empty()) m.a->domain[v] = c.domain_curvature;
+    }
+  };
+  Map map() { return Map{this}; }
+};
+
 int run_curvature(const Options& o) {
   const std::string& input = o.input();
   const std::size_t kv = o.kv();
@@ -31,68 +54,82 @@ int run_curvature(const Options& o) {
   Progress_bar progress(o.show_progress());
   Mesh mesh = read_mesh(input, progress); // written back with the computed point arrays
 
-  // The field, in the user's vertex order.
+  // The field: a coordinate, or a point-data array made the mesh's first one (the octree's scalar
+  // field).  Without an output to write, the octree takes the mesh over (lean construction: no
+  // second copy of V, T and the field), dropping the other arrays.
   std::string field_name = o.get("--field");
-  std::vector<double> values(mesh.points.size());
-  if (field_name == "x" || field_name == "y" || field_name == "z") {
-    const int axis = field_name[0] - 'x';
-    for (std::size_t v = 0; v < values.size(); ++v)
-      values[v] = axis == 0 ? mesh.points[v].x() : axis == 1 ? mesh.points[v].y() : mesh.points[v].z();
-  } else {
-    const CGAL::PR_star_octree::Point_data_array* a =
-        field_name.empty() ? mesh.scalar_field() : mesh.find_point_data(field_name);
-    if (!a) {
+  const bool lean = out.empty() && csv.empty();
+  const int axis = (field_name == "x" || field_name == "y" || field_name == "z") ? field_name[0] - 'x' : -1;
+  std::size_t field_index = 0; // not lean: the field is read in the user's order from the mesh
+  if (axis < 0) {
+    auto& pd = mesh.point_data;
+    auto it = field_name.empty()
+                  ? pd.begin()
+                  : std::find_if(pd.begin(), pd.end(), [&](const auto& a) { return a.name == field_name; });
+    if (it == pd.end()) {
       std::string known;
-      for (const auto& d : mesh.point_data) known += (known.empty() ? "" : ", ") + d.name;
+      for (const auto& d : pd) known += (known.empty() ? "" : ", ") + d.name;
       throw std::runtime_error(input + ": " +
                                (field_name.empty() ? std::string("the mesh has no point data")
                                                    : "no point-data array named '" + field_name + "'") +
                                (known.empty() ? "" : " (it has: " + known + ")") +
                                "; use --field x|y|z for a coordinate");
     }
-    field_name = a->name;
-    values = a->values;
+    field_name = it->name;
+    for (std::size_t v = 0; v < it->values.size(); ++v)
+      if (!std::isfinite(it->values[v]))
+        throw std::runtime_error(input + ": field '" + field_name + "' is not finite at vertex " +
+                                 std::to_string(v));
+    if (lean) { // the field alone, first: the octree's scalar field
+      std::rotate(pd.begin(), it, it + 1);
+      pd.resize(1);
+    } else {
+      field_index = static_cast<std::size_t>(it - pd.begin());
+    }
+  } else if (lean) {
+    mesh.point_data.clear();
   }
-  for (std::size_t v = 0; v < values.size(); ++v)
-    if (!std::isfinite(values[v]))
-      throw std::runtime_error(input + ": field '" + field_name + "' is not finite at vertex " +
-                               std::to_string(v));
 
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
-  const Octree tree(CGAL::PR_star_octree::make_input(mesh),
-                    params::bucket_size(kv).maximum_depth(o.max_depth()));
+  const auto np = params::bucket_size(kv).maximum_depth(o.max_depth()).tetrahedron_permutation(false);
+  const Octree tree = lean ? Octree(std::move(mesh), np) : Octree(CGAL::PR_star_octree::make_input(mesh), np);
+  const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("computing the distortion");
-  std::vector<CGAL::PR_star_octree::Vertex_curvature> curv(mesh.points.size()); // the user's numbering
-  CGAL::PR_star_octree::compute_curvature(tree, CGAL::make_property_map(values),
-                                          CGAL::make_property_map(curv),
-                                          params::progress(progress.callback()));
+  Curvature_arrays curv(nv, !lean); // the user's numbering
+  if (axis < 0 && lean)
+    CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::scalar_field_map(tree), curv.map(),
+                                            params::progress(progress.callback()));
+  else if (axis < 0)
+    CGAL::PR_star_octree::compute_curvature(tree,
+                                            CGAL::make_property_map(mesh.point_data[field_index].values),
+                                            curv.map(), params::progress(progress.callback()));
+  else
+    CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::coordinate_field_map(tree, axis),
+                                            curv.map(), params::progress(progress.callback()));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
 
-  // The arrays for the outputs, and the summary.  The distortions are added in the octree's order
-  // (as the tool always did), so that distortion_mean does not change in the last bits.
-  const std::size_t nv = mesh.points.size();
-  CGAL::PR_star_octree::Point_data_array boundary{"boundary", std::vector<double>(nv)},
-      distortion{"distortion", std::vector<double>(nv)}, domain{"domain_curvature", std::vector<double>(nv)};
+  // The summary.  The distortions are added in the octree's order (as the tool always did), so that
+  // distortion_mean does not change in the last bits.
   std::size_t counts[4] = {0, 0, 0, 0};
   double dmin = std::numeric_limits<double>::infinity(), dmax = -dmin, dsum = 0;
   std::size_t dn = 0;
   for (std::size_t v = 0; v < nv; ++v) {
     const std::size_t u = tree.original_vertex(static_cast<Octree::Index>(v));
-    const auto& c = curv[u];
-    boundary.values[u] = vertex_type_code(c.type);
-    distortion.values[u] = c.distortion;
-    domain.values[u] = c.domain_curvature;
-    ++counts[static_cast<int>(vertex_type_code(c.type))];
-    if (c.type == CGAL::PR_star_octree::Vertex_type::INTERIOR ||
-        c.type == CGAL::PR_star_octree::Vertex_type::BOUNDARY) {
-      dmin = std::min(dmin, c.distortion);
-      dmax = std::max(dmax, c.distortion);
-      dsum += c.distortion;
+    const int code = curv.code[u];
+    ++counts[code];
+    if (code == 0 || code == 1) { // interior or boundary
+      dmin = std::min(dmin, curv.distortion[u]);
+      dmax = std::max(dmax, curv.distortion[u]);
+      dsum += curv.distortion[u];
       ++dn;
     }
   }
+  CGAL::PR_star_octree::Point_data_array boundary{"boundary", std::vector<double>(lean ? 0 : nv)},
+      distortion{"distortion", std::move(curv.distortion)},
+      domain{"domain_curvature", std::move(curv.domain)};
+  for (std::size_t v = 0; v < boundary.values.size(); ++v) boundary.values[v] = curv.code[v];
   if (!out.empty()) {
     progress.phase("writing " + out);
     // VTU point data must be finite (our reader refuses NaN, and so do some of ParaView's): the
@@ -121,7 +158,7 @@ int run_curvature(const Options& o) {
   }
   if (o.json()) {
     Json j;
-    j.begin_object().field("vertices", nv).field("tetrahedra", mesh.tetrahedra.size()).key("kv");
+    j.begin_object().field("vertices", nv).field("tetrahedra", nt).key("kv");
     json_kv(j, kv)
         .field("field", field_name)
         .field("interior_vertices", counts[0])

@@ -25,9 +25,9 @@ int run_demo(const Options& o) {
   // meanwhile, which would redraw over its lines.
   opt.quiet = !o.show_progress();
   Progress_bar progress(o.show_progress());
-  const Mesh mesh = generate_mesh(opt);
-  report_statistics(mesh, "built-in unit ball (CGAL Mesh_3, cell size " + fixed(opt.cell_size, 3) + ")",
-                    o.kvs(), o.max_depth(), o.json(), progress);
+  report_statistics(generate_mesh(opt),
+                    "built-in unit ball (CGAL Mesh_3, cell size " + fixed(opt.cell_size, 3) + ")", o.kvs(),
+                    o.max_depth(), o.json(), progress);
   return exit_success;
 }
 

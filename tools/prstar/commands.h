@@ -23,7 +23,7 @@ Command generate_command();
 
 /// Builds the PR-star octree of `mesh` for each k_v and prints its statistics (a table titled
 /// `name`, or JSON): shared by stats and demo (cmd_stats.cpp).
-void report_statistics(const Mesh& mesh, const std::string& name, const std::vector<std::size_t>& kvs,
+void report_statistics(Mesh mesh, const std::string& name, const std::vector<std::size_t>& kvs,
                        std::size_t max_depth, bool json, Progress_bar& progress,
                        const std::string& octree_out = ""); // `--octree`: the leaf boxes of the last k_v
 

@@ -29,7 +29,9 @@ namespace PR_star_octree {
   X(priority)                                                                                                \
   X(progress)                                                                                                \
   X(domain_curvature_map)                                                                                    \
-  X(vertex_type_map)
+  X(vertex_type_map)                                                                                         \
+  X(tetrahedron_permutation)                                                                                 \
+  X(concurrency_tag)
 
 namespace internal_np {
 // The tags of the package's own named parameters (CGAL's tags live in `CGAL::internal_np`).
@@ -61,7 +63,9 @@ CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_TAG)
 /// `boundary_triangles_output(OutputIterator)` | `compute_boundary()` | none | | `target_fraction(double)`,
 /// `max_edge_length(double)`, `max_rounds(std::size_t)`, `priority(F)` | `simplify()` | 0, infinity, 1000,
 /// `Edge_length_priority` | | `progress(F)` | every leaf-streaming function | none | |
-/// `domain_curvature_map(PMap)`, `vertex_type_map(PMap)` | `compute_discrete_distortion()` | none |
+/// `domain_curvature_map(PMap)`, `vertex_type_map(PMap)` | `compute_discrete_distortion()` | none | |
+/// `tetrahedron_permutation(bool)` | the `PR_star_octree_3` constructors | `true` | |
+/// `concurrency_tag(Tag)` | the `PR_star_octree_3` constructors | `CGAL::Parallel_if_available_tag()` |
 namespace parameters {
 using namespace CGAL::parameters;
 

@@ -9,35 +9,183 @@
 // The construction and the statistics of `CGAL::PR_star_octree_3` (included by PR_star_octree.h).
 
 #include <CGAL/PR_star_octree.h>
+#include <CGAL/PR_star_octree/internal/parallel_leaves.h>
+
+#include <bitset>
 
 namespace CGAL {
+
+namespace PR_star_octree {
+namespace internal {
+
+// Calls `f(begin, end)` on consecutive blocks of [0, n) whose boundaries are multiples of `grain`
+// (so that blocks never share a 64-bit word of a bit array when `grain` is a multiple of 64): with
+// several threads when `ConcurrencyTag` is parallel.
+template <class ConcurrencyTag, class F>
+void for_each_block(std::size_t n, std::size_t grain, const F& f) {
+  if constexpr (is_parallel<ConcurrencyTag>()) {
+#ifdef CGAL_LINKED_WITH_TBB
+    const std::size_t blocks = (n + grain - 1) / grain;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        f(r.begin() * grain, (std::min)(n, r.end() * grain));
+                      });
+#endif
+  } else {
+    f(std::size_t(0), n);
+  }
+}
+
+// Reorders `a` in place so that `a[i]` becomes the old `a[order[i]]` (a gather by a permutation),
+// following the cycles of the permutation with one bit per element: no second copy of `a`.
+template <class T, class Index>
+void gather_in_place(std::vector<T>& a, const std::vector<Index>& order) {
+  const std::size_t n = a.size();
+  CGAL_precondition(order.size() == n);
+  std::vector<bool> done(n, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (done[i]) continue;
+    if (static_cast<std::size_t>(order[i]) == i) {
+      done[i] = true;
+      continue;
+    }
+    T saved = std::move(a[i]);
+    std::size_t j = i;
+    for (;;) {
+      const std::size_t k = static_cast<std::size_t>(order[j]);
+      done[j] = true;
+      if (k == i) {
+        a[j] = std::move(saved);
+        break;
+      }
+      a[j] = std::move(a[k]);
+      j = k;
+    }
+  }
+}
+
+} // namespace internal
+} // namespace PR_star_octree
 
 // ---------------------------------------------------------------------------------------------
 // Construction
 // ---------------------------------------------------------------------------------------------
 
 template <class GT, class I>
-template <class InputMesh>
-void PR_star_octree_3<GT, I>::build(const InputMesh& input) {
-  const std::size_t nv = input.number_of_vertices();
-  const std::size_t nt = input.number_of_tetrahedra();
+void PR_star_octree_3<GT, I>::check_sizes(std::size_t nv, std::size_t nt) const {
   const std::size_t index_max = static_cast<std::size_t>(no_node) - 1;
   if (nv > index_max || nt > index_max || 4 * nt > index_max)
     throw std::invalid_argument("PR_star_octree_3: the mesh (" + std::to_string(nv) + " vertices, " +
                                 std::to_string(nt) + " tetrahedra) does not fit the " +
                                 std::to_string(8 * sizeof(I)) + "-bit index type");
+}
 
-  // 1. Coordinates and bounding cube.
-  std::vector<std::array<double, 3>> xyz(nv);
+// The copying path: V, the scalars, the labels and T (validated) in the input's order.
+template <class GT, class I>
+template <class InputMesh>
+void PR_star_octree_3<GT, I>::copy_input(const InputMesh& input) {
+  const std::size_t nv = input.number_of_vertices();
+  const std::size_t nt = input.number_of_tetrahedra();
+  check_sizes(nv, nt);
+  points_.reserve(nv);
+  for (std::size_t i = 0; i < nv; ++i) points_.push_back(convert_point(input.point(i)));
+  if (input.has_scalar_field()) {
+    has_scalar_ = true;
+    scalars_.resize(nv);
+    for (std::size_t i = 0; i < nv; ++i) scalars_[i] = static_cast<double>(input.scalar(i));
+  }
+  tetrahedra_.resize(nt);
+  for (std::size_t t = 0; t < nt; ++t) {
+    const auto c = input.tetrahedron(t);
+    Tetrahedron& r = tetrahedra_[t];
+    for (int k = 0; k < 4; ++k) {
+      const auto v = c[k];
+      // (also rejects the negative indices of a signed index type)
+      if (!(v >= 0) || static_cast<std::size_t>(v) >= nv)
+        throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
+                                    " has vertex index " + std::to_string(v) + " out of range [0, " +
+                                    std::to_string(nv) + ")");
+      r[k] = static_cast<Index>(v);
+    }
+  }
+  if constexpr (PR_star_octree::internal::has_tetrahedron_labels<InputMesh>::value) {
+    if (input.has_tetrahedron_labels()) {
+      has_labels_ = true;
+      labels_.resize(nt);
+      for (std::size_t t = 0; t < nt; ++t) labels_[t] = static_cast<int>(input.tetrahedron_label(t));
+    }
+  }
+}
+
+// The lean path: the arrays are moved in.
+template <class GT, class I>
+void PR_star_octree_3<GT, I>::take_mesh(PR_star_octree::Indexed_tetrahedral_mesh<Point_3, Index>&& mesh) {
+  points_ = std::move(mesh.points);
+  tetrahedra_ = std::move(mesh.tetrahedra);
+  mesh.points.clear();
+  mesh.tetrahedra.clear();
+  const std::size_t nv = points_.size(), nt = tetrahedra_.size();
+  if (!mesh.point_data.empty()) {
+    scalars_ = std::move(mesh.point_data.front().values);
+    mesh.point_data.erase(mesh.point_data.begin());
+    has_scalar_ = true;
+  }
+  if (!mesh.tetrahedron_labels.empty()) {
+    labels_ = std::move(mesh.tetrahedron_labels);
+    mesh.tetrahedron_labels.clear();
+    has_labels_ = true;
+  }
+  check_sizes(nv, nt);
+  if (has_scalar_ && scalars_.size() != nv)
+    throw std::invalid_argument("PR_star_octree_3: the scalar field has " + std::to_string(scalars_.size()) +
+                                " values for " + std::to_string(nv) + " vertices");
+  if (has_labels_ && labels_.size() != nt)
+    throw std::invalid_argument("PR_star_octree_3: " + std::to_string(labels_.size()) + " labels for " +
+                                std::to_string(nt) + " tetrahedra");
+  for (std::size_t t = 0; t < nt; ++t)
+    for (int k = 0; k < 4; ++k)
+      if (static_cast<std::size_t>(tetrahedra_[t][k]) >= nv)
+        throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
+                                    " has vertex index " + std::to_string(tetrahedra_[t][k]) +
+                                    " out of range [0, " + std::to_string(nv) + ")");
+}
+
+template <class GT, class I>
+void PR_star_octree_3<GT, I>::set_labels_uniform_if_possible() {
+  if (!has_labels_ || labels_.empty()) return;
+  if (std::all_of(labels_.begin(), labels_.end(), [&](int l) { return l == labels_.front(); })) {
+    uniform_label_ = labels_.front(); // one subdomain: one value, not |T|
+    std::vector<int>().swap(labels_);
+  }
+}
+
+// Common to both paths: `points_`, `scalars_`, `labels_` and `tetrahedra_` hold the input, in its
+// order and numbering (indices in range); they are re-indexed in place.
+template <class GT, class I>
+template <class ConcurrencyTag>
+void PR_star_octree_3<GT, I>::build_in_place() {
+  const std::size_t nv = points_.size(), nt = tetrahedra_.size();
+
+  // Repeated vertices in a tetrahedron (in the user's numbering, for the message).
+  for (std::size_t t = 0; t < nt; ++t) {
+    const Tetrahedron& r = tetrahedra_[t];
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        if (r[i] == r[j])
+          throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
+                                      " lists vertex " + std::to_string(r[i]) + " twice");
+  }
+
+  // 1. Bounding cube (and finite coordinates).
   std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
   for (std::size_t i = 0; i < nv; ++i) {
-    xyz[i] = coordinates(convert_point(input.point(i)));
+    const std::array<double, 3> c = coordinates(points_[i]);
     for (int a = 0; a < 3; ++a) {
-      if (!std::isfinite(xyz[i][a]))
+      if (!std::isfinite(c[a]))
         throw std::invalid_argument("PR_star_octree_3: vertex " + std::to_string(i) +
                                     " has a non-finite coordinate");
-      if (i == 0 || xyz[i][a] < lo[a]) lo[a] = xyz[i][a];
-      if (i == 0 || xyz[i][a] > hi[a]) hi[a] = xyz[i][a];
+      if (i == 0 || c[a] < lo[a]) lo[a] = c[a];
+      if (i == 0 || c[a] > hi[a]) hi[a] = c[a];
     }
   }
   double side = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
@@ -48,32 +196,24 @@ void PR_star_octree_3<GT, I>::build(const InputMesh& input) {
     if (root_hi_[a] < hi[a]) root_hi_[a] = hi[a]; // rounding: the cube must contain every point
   }
 
-  // 2. PR split of the vertices, depth first: `order[new] = original`.
+  // 2. PR split of the vertices, depth first: `order[new] = original`; V re-indexed in place.
   std::vector<Index> order(nv);
   std::iota(order.begin(), order.end(), Index(0));
-  split_vertices(xyz, order);
-  xyz.clear();
-  xyz.shrink_to_fit();
-
-  // 3. Re-indexed vertex array.
-  points_.reserve(nv);
-  for (std::size_t i = 0; i < nv; ++i) points_.push_back(convert_point(input.point(order[i])));
-  if (input.has_scalar_field()) {
-    has_scalar_ = true;
-    scalars_.resize(nv);
-    for (std::size_t i = 0; i < nv; ++i) scalars_[i] = static_cast<double>(input.scalar(order[i]));
-  }
-  vertex_to_original_ = order;
+  split_vertices(order);
+  PR_star_octree::internal::gather_in_place(points_, order);
+  if (has_scalar_) PR_star_octree::internal::gather_in_place(scalars_, order);
   std::vector<Index> from_original = inverse(order);
+  vertex_to_original_ = std::move(order);
 
-  // 4. Re-indexed, oriented tetrahedra and the leaf lists.
-  build_tetrahedra(input, from_original);
+  // 3. T re-indexed, sorted, oriented; then the leaf lists.
+  sort_and_orient_tetrahedra<ConcurrencyTag>(from_original);
+  std::vector<Index>().swap(from_original);
+  set_labels_uniform_if_possible();
   build_leaf_lists();
 }
 
 template <class GT, class I>
-void PR_star_octree_3<GT, I>::split_vertices(const std::vector<std::array<double, 3>>& xyz,
-                                             std::vector<Index>& order) {
+void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
   struct Item {
     Node_index node;
     std::array<double, 3> lo, hi;
@@ -98,9 +238,9 @@ void PR_star_octree_3<GT, I>::split_vertices(const std::vector<std::array<double
       ++depth_limited_leaves_;
     }
     if (split) { // points that all coincide can never be separated: stop and report
-      const std::array<double, 3>& p0 = xyz[order[b]];
+      const std::array<double, 3> p0 = coordinates(points_[order[b]]);
       bool all_same = true;
-      for (Index i = b + 1; i < e && all_same; ++i) all_same = (xyz[order[i]] == p0);
+      for (Index i = b + 1; i < e && all_same; ++i) all_same = (coordinates(points_[order[i]]) == p0);
       if (all_same) {
         split = false;
         ++coincident_leaves_;
@@ -118,7 +258,7 @@ void PR_star_octree_3<GT, I>::split_vertices(const std::vector<std::array<double
     code.resize(count);
     std::array<std::size_t, 9> start{};
     for (std::size_t i = 0; i < count; ++i) {
-      const std::array<double, 3>& p = xyz[order[b + i]];
+      const std::array<double, 3> p = coordinates(points_[order[b + i]]);
       const unsigned c =
           unsigned(p[0] >= mid[0]) | (unsigned(p[1] >= mid[1]) << 1) | (unsigned(p[2] >= mid[2]) << 2);
       code[i] = static_cast<unsigned char>(c);
@@ -150,85 +290,63 @@ void PR_star_octree_3<GT, I>::split_vertices(const std::vector<std::array<double
       stack.push_back(child);
     }
   }
+  std::vector<Index>().swap(buffer);
+  nodes_.shrink_to_fit();
+  leaves_.shrink_to_fit();
 }
 
 template <class GT, class I>
-template <class InputMesh>
-void PR_star_octree_3<GT, I>::build_tetrahedra(const InputMesh& input,
-                                               const std::vector<Index>& from_original) {
+template <class ConcurrencyTag>
+void PR_star_octree_3<GT, I>::sort_and_orient_tetrahedra(const std::vector<Index>& from_original) {
   const std::size_t nv = points_.size();
-  const std::size_t nt = input.number_of_tetrahedra();
+  const std::size_t nt = tetrahedra_.size();
+  using PR_star_octree::internal::for_each_block;
 
-  // Validate and find the smallest vertex of each tetrahedron in the new numbering (the sort key).
-  // The input is read twice rather than remapped into a temporary copy of T: the peak memory of
-  // the construction stays at one T (ours) plus one index per tetrahedron.
-  auto remap = [&](std::size_t t) {
-    const auto c = input.tetrahedron(t);
-    Tetrahedron r;
-    for (int k = 0; k < 4; ++k) {
-      const auto v = c[k];
-      if (!(v >= 0) || static_cast<std::size_t>(v) >= nv)
-        throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
-                                    " has vertex index " + std::to_string(v) + " out of range [0, " +
-                                    std::to_string(nv) + ")");
-      // (the check above also rejects negative indices of a signed index type)
-      r[k] = from_original[static_cast<std::size_t>(v)];
-    }
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        if (r[i] == r[j])
-          throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
-                                      " lists vertex " + std::to_string(c[i]) + " twice");
-    return r;
-  };
-  std::vector<Index> key(nt);
-  for (std::size_t t = 0; t < nt; ++t) {
-    const Tetrahedron r = remap(t);
-    key[t] = *std::min_element(r.begin(), r.end());
+  // New vertex numbering, in place.
+  for_each_block<ConcurrencyTag>(nt, 1 << 16, [&](std::size_t b, std::size_t e) {
+    for (std::size_t t = b; t < e; ++t)
+      for (Index& v : tetrahedra_[t]) v = from_original[v];
+  });
+
+  // Locality: counting sort by smallest vertex (stable, so the result is deterministic), then T
+  // and the labels gathered in place.
+  std::vector<Index> perm(nt);
+  {
+    std::vector<Index> start(nv + 1, 0);
+    const auto key = [&](std::size_t t) {
+      const Tetrahedron& c = tetrahedra_[t];
+      return (std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3]));
+    };
+    for (std::size_t t = 0; t < nt; ++t) ++start[key(t) + 1];
+    for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+    for (std::size_t t = 0; t < nt; ++t) perm[start[key(t)]++] = static_cast<Index>(t);
   }
+  PR_star_octree::internal::gather_in_place(tetrahedra_, perm);
+  if (!labels_.empty()) PR_star_octree::internal::gather_in_place(labels_, perm);
+  if (keep_tetrahedron_permutation_)
+    tetrahedron_to_original_ = std::move(perm);
+  else
+    std::vector<Index>().swap(perm);
 
-  // Locality: counting sort by smallest vertex (stable, so the result is deterministic).
-  std::vector<Index> start(nv + 1, 0);
-  for (Index k : key) ++start[k + 1];
-  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  tetrahedron_to_original_.assign(nt, 0);
-  for (std::size_t t = 0; t < nt; ++t) tetrahedron_to_original_[start[key[t]]++] = static_cast<Index>(t);
-  std::vector<Index>().swap(key);
-  std::vector<Index>().swap(start);
-
-  // Positive orientation with the exact predicate.
-  tetrahedra_.resize(nt);
+  // Positive orientation with the exact predicate; blocks of 64 tetrahedra own their word of
+  // `reoriented_`, and the counts are summed afterwards, so any number of threads gives the same.
   reoriented_.assign((nt + 63) / 64, 0);
-  auto orientation = gt_.orientation_3_object();
-  for (std::size_t t = 0; t < nt; ++t) {
-    Tetrahedron c = remap(tetrahedron_to_original_[t]);
-    const CGAL::Orientation o = orientation(points_[c[0]], points_[c[1]], points_[c[2]], points_[c[3]]);
-    if (o == CGAL::NEGATIVE) {
-      std::swap(c[2], c[3]);
-      reoriented_[t >> 6] |= std::uint64_t(1) << (t & 63);
-      ++reoriented_count_;
-    } else if (o == CGAL::COPLANAR)
-      ++degenerate_tetrahedra_;
-    tetrahedra_[t] = c;
-  }
-
-  // The labels, in the new numbering.
-  if constexpr (PR_star_octree::internal::has_tetrahedron_labels<InputMesh>::value) {
-    if (input.has_tetrahedron_labels()) {
-      has_labels_ = true;
-      bool uniform = true;
-      const int first = nt ? static_cast<int>(input.tetrahedron_label(0)) : 0;
-      for (std::size_t t = 1; t < nt && uniform; ++t)
-        uniform = static_cast<int>(input.tetrahedron_label(t)) == first;
-      if (uniform) // one subdomain: one value, not |T|
-        uniform_label_ = first;
-      else {
-        labels_.resize(nt);
-        for (std::size_t t = 0; t < nt; ++t)
-          labels_[t] = input.tetrahedron_label(tetrahedron_to_original_[t]);
-      }
+  std::vector<std::uint32_t> word_degenerate(reoriented_.size(), 0);
+  for_each_block<ConcurrencyTag>(nt, 64 * 1024, [&](std::size_t b, std::size_t e) {
+    auto orientation = gt_.orientation_3_object();
+    for (std::size_t t = b; t < e; ++t) {
+      Tetrahedron& c = tetrahedra_[t];
+      const CGAL::Orientation o = orientation(points_[c[0]], points_[c[1]], points_[c[2]], points_[c[3]]);
+      if (o == CGAL::NEGATIVE) {
+        std::swap(c[2], c[3]);
+        reoriented_[t >> 6] |= std::uint64_t(1) << (t & 63);
+      } else if (o == CGAL::COPLANAR)
+        ++word_degenerate[t >> 6];
     }
-  }
+  });
+  for (std::uint64_t w : reoriented_)
+    reoriented_count_ += static_cast<std::size_t>(std::bitset<64>(w).count());
+  for (std::uint32_t d : word_degenerate) degenerate_tetrahedra_ += d;
 }
 
 template <class GT, class I>
