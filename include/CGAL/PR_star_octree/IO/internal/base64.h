@@ -57,6 +57,8 @@ public:
   std::size_t max_remaining_bytes() const { return avail_ + (text_.size() - pos_) / 4 * 3 + 3; }
 
   const char* error() const { return error_; }
+  /// the first character of the text not decoded yet
+  const char* position() const { return text_.data() + pos_; }
   /// offset in the text of the problem reported by `error()`
   std::size_t error_offset() const { return error_pos_; }
 

@@ -29,8 +29,13 @@
 #include <utility>
 
 #if defined(__linux__)
+#include <fcntl.h>
 #include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #endif
+
+#include <vector>
 
 namespace CGAL {
 namespace PR_star_octree {
@@ -136,9 +141,38 @@ inline void advise_huge_pages(const void* data, std::size_t bytes) {
 #endif
 }
 
-/// The whole content of a file in memory, like `load_file()` (same errors), but in a buffer that
-/// is not zero-filled first and may be backed by huge pages (reading a 1 GB binary file from the
-/// page cache then costs a copy, not a million page faults).
+/// The byte ranges of the files this thread has mapped (`File_bytes`): only their pages may be
+/// released by `release_file_pages()`.
+inline std::vector<std::pair<const char*, const char*>>& mapped_files() {
+  static thread_local std::vector<std::pair<const char*, const char*>> files;
+  return files;
+}
+
+/// Tells that the bytes `[begin, end)` of a file read through `File_bytes` will not be read soon:
+/// the whole pages among them leave the resident memory of the process (they stay in the page
+/// cache, and are read back from it if touched again).  So reading a file of gigabytes costs a few
+/// megabytes of resident memory, not the size of the file.  No effect on any other memory.
+inline void release_file_pages(const char* begin, const char* end) {
+#if defined(__linux__) && defined(MADV_DONTNEED)
+  for (const auto& f : mapped_files()) {
+    if (begin < f.first || end > f.second || begin >= end) continue;
+    const std::uintptr_t page = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
+    const std::uintptr_t b = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) / page * page;
+    const std::uintptr_t e = reinterpret_cast<std::uintptr_t>(end) / page * page;
+    if (e > b) (void)::madvise(reinterpret_cast<void*>(b), e - b, MADV_DONTNEED);
+    return;
+  }
+#else
+  (void)begin;
+  (void)end;
+#endif
+}
+
+/// The whole content of a file, like `load_file()` (same errors).  A regular file is mapped into
+/// memory read-only (Linux): nothing is copied, pages are read from the page cache as the parser
+/// reaches them, and the parser may give them back with `release_file_pages()`.  Otherwise (another
+/// system, a pipe, a failed mapping) the file is read into a buffer that is not zero-filled first
+/// and may be backed by huge pages.
 class File_bytes {
 public:
   explicit File_bytes(const std::string& filename) {
@@ -149,6 +183,9 @@ public:
       const std::uintmax_t size = std::filesystem::file_size(path, ec);
       if (!ec && size > 0 && size < std::uintmax_t(std::numeric_limits<std::size_t>::max() / 2)) {
         const std::size_t n = static_cast<std::size_t>(size);
+#if defined(__linux__)
+        if (map(filename, n)) return;
+#endif
         const std::size_t align = std::size_t(1) << 21;
         const std::size_t rounded = (n + align - 1) / align * align;
         buffer_.reset(static_cast<char*>(std::aligned_alloc(align, rounded)));
@@ -169,16 +206,47 @@ public:
   }
   File_bytes(const File_bytes&) = delete;
   File_bytes& operator=(const File_bytes&) = delete;
+  ~File_bytes() {
+#if defined(__linux__)
+    if (mapped_) {
+      auto& files = mapped_files();
+      files.erase(
+          std::remove(files.begin(), files.end(), std::make_pair(view_.data(), view_.data() + view_.size())),
+          files.end());
+      ::munmap(const_cast<char*>(view_.data()), view_.size());
+    }
+#endif
+  }
 
-  std::string_view view() const { return view_; }
+  std::string_view view() const {
+    return view_;
+  }
 
 private:
+#if defined(__linux__)
+  bool map(const std::string& filename, std::size_t n) {
+    const int fd = ::open(filename.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    struct stat st;
+    void* p = MAP_FAILED;
+    if (::fstat(fd, &st) == 0 && static_cast<std::uintmax_t>(st.st_size) == n)
+      p = ::mmap(nullptr, n, PROT_READ, MAP_PRIVATE, fd, 0);
+    ::close(fd);
+    if (p == MAP_FAILED) return false;
+    (void)::madvise(p, n, MADV_SEQUENTIAL);
+    view_ = std::string_view(static_cast<const char*>(p), n);
+    mapped_ = true;
+    mapped_files().emplace_back(view_.data(), view_.data() + n);
+    return true;
+  }
+#endif
   struct Free {
     void operator()(char* p) const { std::free(p); }
   };
   std::unique_ptr<char, Free> buffer_;
   std::string text_;
   std::string_view view_;
+  bool mapped_ = false;
 };
 
 /// Appends the bytes of `v` (machine byte order) to `out`.

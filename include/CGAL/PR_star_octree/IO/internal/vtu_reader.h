@@ -51,14 +51,16 @@ public:
   /// raw bytes `data[0..size)`, at byte `file_offset` of the file
   Vtu_byte_source(const char* data, std::size_t size, std::size_t file_offset)
       : raw_(reinterpret_cast<const unsigned char*>(data)), size_(size), base_(file_offset),
-        dec_(std::string_view()) {}
+        dec_(std::string_view()), released_(data) {}
   /// base64 text at byte `file_offset` of the file (when it is one piece of the file)
-  Vtu_byte_source(std::string_view base64, std::size_t file_offset) : base_(file_offset), dec_(base64) {}
+  Vtu_byte_source(std::string_view base64, std::size_t file_offset)
+      : base_(file_offset), dec_(base64), released_(base64.data()) {}
 
   bool is_raw() const { return raw_ != nullptr; }
 
   /// Fills `dst[0..n)`; false when the data end first or are not valid base64 (see `error()`).
   bool read(unsigned char* dst, std::size_t n) {
+    release_consumed();
     if (raw_ != nullptr) {
       if (size_ - pos_ < n) return false;
       std::memcpy(dst, raw_ + pos_, n);
@@ -71,6 +73,7 @@ public:
   /// The next `n` bytes, in place for raw data, decoded into `storage` for base64; nullptr when
   /// they are not there.
   const unsigned char* take(std::size_t n, std::vector<unsigned char>& storage) {
+    release_consumed(); // what earlier calls returned has been used
     if (raw_ != nullptr) {
       if (size_ - pos_ < n) return nullptr;
       const unsigned char* p = raw_ + pos_;
@@ -93,9 +96,20 @@ public:
   }
 
 private:
+  // The file bytes read so far leave the resident memory every 32 MB (a mapped file only: see
+  // `release_file_pages()`), so that reading a file of gigabytes does not hold it all.
+  void release_consumed() {
+    const char* now = raw_ != nullptr ? reinterpret_cast<const char*>(raw_ + pos_) : dec_.position();
+    if (now - released_ >= (std::ptrdiff_t(1) << 25)) {
+      release_file_pages(released_, now);
+      released_ = now;
+    }
+  }
+
   const unsigned char* raw_ = nullptr;
   std::size_t size_ = 0, pos_ = 0, base_ = 0;
   Base64_decoder dec_;
+  const char* released_;
 };
 
 /// Reads the data arrays of a parsed VTK XML file.
