@@ -283,6 +283,40 @@ void check_lean_construction(const Mesh& mesh, std::size_t kv, const std::string
   }
 }
 
+// The in-place radix sort against std::sort: the same keys in order, the same elements; and the
+// same order with one thread and with several.
+void test_radix_sort_in_place() {
+  std::mt19937 rng(11);
+  for (std::size_t n : {std::size_t(0), std::size_t(5), std::size_t(63), std::size_t(64), std::size_t(5000),
+                        std::size_t(300000)}) {
+    for (std::uint64_t bound : {std::uint64_t(1), std::uint64_t(7), std::uint64_t(1000),
+                                std::uint64_t(1) << 21, std::uint64_t(1) << 33}) {
+      std::uniform_int_distribution<std::uint64_t> u(0, bound - 1);
+      std::vector<std::pair<std::uint64_t, std::size_t>> a(n); // (key, identity)
+      for (std::size_t i = 0; i < n; ++i) a[i] = {u(rng), i};
+      auto expected = a;
+      std::sort(expected.begin(), expected.end());
+      int width = 0;
+      while (width < 64 && ((bound - 1) >> width) != 0) ++width;
+      const int shift = std::max(width - 10, 0);
+      auto b = a;
+      const auto run = [&](auto tag, std::vector<std::pair<std::uint64_t, std::size_t>>& v) {
+        CGAL::PR_star_octree::internal::radix_sort_in_place<decltype(tag)>(
+            0, v.size(), shift, [&](std::size_t i) { return v[i].first; },
+            [&](std::size_t i, std::size_t j) { std::swap(v[i], v[j]); });
+      };
+      run(CGAL::Sequential_tag(), a);
+      run(CGAL::Parallel_if_available_tag(), b);
+      CHECK(a == b);
+      bool sorted = true;
+      for (std::size_t i = 1; i < n; ++i) sorted = sorted && a[i - 1].first <= a[i].first;
+      CHECK(sorted);
+      std::sort(a.begin(), a.end());
+      CHECK(a == expected);
+    }
+  }
+}
+
 // The in-place gather against a plain one, on random permutations of several sizes.
 void test_gather_in_place() {
   std::mt19937 rng(7);
@@ -489,6 +523,7 @@ int main(int argc, char** argv) {
   test_errors();
   test_other_traits();
   test_gather_in_place();
+  test_radix_sort_in_place();
 
   // Generated meshes (CGAL Mesh_3 and TetGen, made by the test fixture).
   for (const char* name :

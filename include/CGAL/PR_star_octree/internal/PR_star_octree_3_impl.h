@@ -64,6 +64,53 @@ void gather_in_place(std::vector<T>& a, const std::vector<Index>& order) {
   }
 }
 
+// Sorts the elements `[b, e)` in place by `key(i)` (an unsigned integer below 2^(shift + 10)),
+// moving them only with `swap(i, j)`: an in-place most-significant-digit radix sort (American flag
+// sort) on digits of 10 bits, from bit `shift` down to bit 0, and insertion sort below 64 elements.
+// Equal keys end up in an order that depends only on the initial order, the same for any number of
+// threads: the buckets of the top digit are sorted independently, in parallel with `ConcurrencyTag`.
+template <class ConcurrencyTag, class Key, class Swap>
+void radix_sort_in_place(std::size_t b, std::size_t e, int shift, const Key& key, const Swap& swap,
+                         bool top = true) {
+  constexpr int bits = 10;
+  constexpr std::size_t radix = std::size_t(1) << bits;
+  if (e - b < 64) { // insertion sort on the whole key
+    for (std::size_t i = b + 1; i < e; ++i)
+      for (std::size_t j = i; j > b && key(j) < key(j - 1); --j) swap(j, j - 1);
+    return;
+  }
+  const auto digit = [&](std::size_t i) { return static_cast<std::size_t>((key(i) >> shift) & (radix - 1)); };
+  std::vector<std::size_t> head(radix + 1, 0), end(radix);
+  for (std::size_t i = b; i < e; ++i) ++head[digit(i) + 1];
+  head[0] = b;
+  for (std::size_t d = 0; d < radix; ++d) head[d + 1] += head[d];
+  std::vector<std::size_t> first(head.begin(), head.end());
+  for (std::size_t d = 0; d < radix; ++d) end[d] = first[d + 1];
+  for (std::size_t d = 0; d < radix; ++d) {
+    while (head[d] < end[d]) {
+      const std::size_t i = head[d];
+      for (std::size_t dd = digit(i); dd != d; dd = digit(i)) swap(i, head[dd]++);
+      ++head[d];
+    }
+  }
+  if (shift == 0) return;
+  const int next = (std::max)(shift - bits, 0);
+  const auto recurse = [&](std::size_t d) {
+    if (first[d + 1] - first[d] > 1)
+      radix_sort_in_place<CGAL::Sequential_tag>(first[d], first[d + 1], next, key, swap, false);
+  };
+  if constexpr (is_parallel<ConcurrencyTag>()) {
+#ifdef CGAL_LINKED_WITH_TBB
+    if (top) {
+      tbb::parallel_for(std::size_t(0), radix, recurse);
+      return;
+    }
+#endif
+  }
+  (void)top;
+  for (std::size_t d = 0; d < radix; ++d) recurse(d);
+}
+
 } // namespace internal
 } // namespace PR_star_octree
 
@@ -308,25 +355,30 @@ void PR_star_octree_3<GT, I>::sort_and_orient_tetrahedra(const std::vector<Index
       for (Index& v : tetrahedra_[t]) v = from_original[v];
   });
 
-  // Locality: counting sort by smallest vertex (stable, so the result is deterministic), then T
-  // and the labels gathered in place.
-  std::vector<Index> perm(nt);
+  // Locality: T sorted by smallest vertex, in place (radix sort), the labels and the permutation
+  // to the user's numbering (when kept) moved along.
+  std::vector<Index> perm;
+  if (keep_tetrahedron_permutation_) {
+    perm.resize(nt);
+    std::iota(perm.begin(), perm.end(), Index(0));
+  }
   {
-    std::vector<Index> start(nv + 1, 0);
     const auto key = [&](std::size_t t) {
       const Tetrahedron& c = tetrahedra_[t];
-      return (std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3]));
+      return static_cast<std::uint64_t>((std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3])));
     };
-    for (std::size_t t = 0; t < nt; ++t) ++start[key(t) + 1];
-    for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-    for (std::size_t t = 0; t < nt; ++t) perm[start[key(t)]++] = static_cast<Index>(t);
+    const bool with_labels = !labels_.empty(), with_perm = !perm.empty();
+    const auto swap = [&](std::size_t i, std::size_t j) {
+      std::swap(tetrahedra_[i], tetrahedra_[j]);
+      if (with_labels) std::swap(labels_[i], labels_[j]);
+      if (with_perm) std::swap(perm[i], perm[j]);
+    };
+    int width = 0; // of the largest key, nv - 1; the top digit takes its 10 highest bits
+    while (width < 64 && (std::uint64_t(nv > 0 ? nv - 1 : 0) >> width) != 0) ++width;
+    const int top_shift = (std::max)(width - 10, 0);
+    PR_star_octree::internal::radix_sort_in_place<ConcurrencyTag>(0, nt, top_shift, key, swap);
   }
-  PR_star_octree::internal::gather_in_place(tetrahedra_, perm);
-  if (!labels_.empty()) PR_star_octree::internal::gather_in_place(labels_, perm);
-  if (keep_tetrahedron_permutation_)
-    tetrahedron_to_original_ = std::move(perm);
-  else
-    std::vector<Index>().swap(perm);
+  tetrahedron_to_original_ = std::move(perm);
 
   // Positive orientation with the exact predicate; blocks of 64 tetrahedra own their word of
   // `reoriented_`, and the counts are summed afterwards, so any number of threads gives the same.
