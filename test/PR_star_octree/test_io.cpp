@@ -638,6 +638,45 @@ static void test_round_trips() {
 
 // ------------------------------------------------------------------------------------------------
 
+// The memory limit (issue 10, item 8): a file announcing more than the limit is refused from its
+// header with a Memory_limit_error naming the counts; limits nest and are restored.  The tricky mesh
+// (5 vertices, 3 tetrahedra) needs at least 5 x 24 + 3 x 16 = 168 bytes.
+static void test_memory_limit() {
+  namespace IO = CGAL::PR_star_octree::IO;
+  const Mesh m = tricky_mesh();
+  for (const char* name : {"limit.vtu", "limit.meshb"}) {
+    const std::string f = (tmp / name).string();
+    IO::write_tetrahedral_mesh(f, m);
+    const std::size_t outer = IO::Memory_limit::current();
+    {
+      const IO::Memory_limit limit(100);
+      CHECK_EQUAL(IO::Memory_limit::current(), std::size_t(100));
+      bool refused = false;
+      try {
+        Mesh r;
+        IO::read_tetrahedral_mesh(f, r);
+      } catch (const IO::Memory_limit_error& e) {
+        refused = true;
+        CHECK(contains(e.what(), "(5 vertices, 3 tetrahedra)") ||
+              contains(e.what(), "(5 vertices, 0 tetrahedra)"));
+        CHECK(contains(e.what(), "refused before reading it"));
+        CHECK(e.needed() > 100 && e.needed() < 10000);
+        CHECK_EQUAL(e.limit(), std::size_t(100));
+      }
+      CHECK(refused);
+      {
+        const IO::Memory_limit inner(IO::Memory_limit::unlimited);
+        Mesh r;
+        IO::read_tetrahedral_mesh(f, r);
+        CHECK_EQUAL(r.tetrahedra.size(), std::size_t(3));
+      }
+      CHECK_EQUAL(IO::Memory_limit::current(), std::size_t(100));
+    }
+    CHECK(IO::Memory_limit::current() > 0);
+    (void)outer;
+  }
+}
+
 static void test_shared(const prstar_test::Data_folders& data) {
   if (!data.report_shared()) return;
   struct Case {
@@ -682,6 +721,7 @@ int main(int argc, char** argv) {
     test_vtk();
     test_vtu();
     test_round_trips();
+    test_memory_limit();
     test_shared(data);
   } catch (const std::exception& e) {
     FAIL("unexpected exception: " << e.what());

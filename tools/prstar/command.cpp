@@ -20,6 +20,13 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <limits>
+#include <memory>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 namespace prstar {
 
 namespace {
@@ -33,6 +40,10 @@ const char* const help_kv_list = "bucket thresholds k_v of the octree: positive 
 const std::string help_max_depth =
     "depth bound of the octree, 1 to 64 (default " + std::to_string(Octree::default_max_depth) + ")";
 const char* const help_force = "overwrite an existing output file (never the input)";
+const char* const help_threads = "number of threads (default: all the cores)";
+const char* const help_max_memory =
+    "the memory the mesh may need, e.g. 800M, 64G or unlimited (default: the memory\n"
+    "available / 1.3); a file announcing a bigger mesh is refused before it is read";
 const char* const help_json = "print the result as one JSON object on stdout, and no progress";
 const char* const help_quiet = "no progress on stderr";
 const char* const help_quiet_summary = "no progress on stderr, and no summary on stdout";
@@ -188,6 +199,7 @@ std::string Command::usage_line() const {
       u += " [" + d.name + (d.value_name.empty() ? "" : " " + d.value_name) + "]";
   if (has_kv_) u += kv_list_ ? " [--kv N|inf[,N...]]" : " [--kv N|inf]";
   if (has_max_depth_) u += " [--max-depth D]";
+  if (!input_.empty()) u += " [--threads N] [--max-memory SIZE]";
   for (const Output_decl& o : outputs_) {
     const std::string s = (o.option.empty() ? "-o" : o.option) + " " + o.value_name;
     u += o.required ? " " + s : " [" + s + "]";
@@ -204,6 +216,10 @@ std::string Command::help() const {
     lines.push_back({kv_list_ ? "--kv N|inf[,N...]" : "--kv N|inf",
                      (kv_list_ ? help_kv_list : help_kv) + std::string("\n(default ") + kv_default_ + ")"});
   if (has_max_depth_) lines.push_back({"--max-depth D", help_max_depth});
+  if (!input_.empty()) {
+    lines.push_back({"--threads N", help_threads});
+    lines.push_back({"--max-memory SIZE", help_max_memory});
+  }
   for (const Output_decl& o : outputs_)
     lines.push_back({(o.option.empty() ? "-o, --output" : o.option) + " " + o.value_name,
                      o.help + (o.extension.empty()
@@ -231,6 +247,10 @@ Options Command::parse(int argc, char** argv, int first) const {
   for (const Declared& d : specific_) (d.value_name.empty() ? flags : values).push_back(d.name);
   if (has_kv_) values.push_back("--kv");
   if (has_max_depth_) values.push_back("--max-depth");
+  if (!input_.empty()) {
+    values.push_back("--threads");
+    values.push_back("--max-memory");
+  }
   for (const Output_decl& o : outputs_) {
     if (o.option.empty()) {
       values.push_back("-o");
@@ -259,6 +279,12 @@ Options Command::parse(int argc, char** argv, int first) const {
     o.kvs_ = parse_bucket_list(args.get("--kv", kv_default_));
     if (!kv_list_ && o.kvs_.size() != 1) throw Usage_error("--kv takes one value here");
   }
+  if (args.has("--threads")) {
+    const double n = args.get_double("--threads", 0);
+    if (n < 1 || n > 4096 || n != std::floor(n)) throw Usage_error("--threads must be a positive integer");
+    o.threads_ = static_cast<std::size_t>(n);
+  }
+  if (args.has("--max-memory")) o.max_memory_ = parse_memory_size(args.get("--max-memory"));
   o.max_depth_ = Octree::default_max_depth;
   if (has_max_depth_) {
     const double depth = args.get_double("--max-depth", double(Octree::default_max_depth));
@@ -347,6 +373,55 @@ std::vector<std::size_t> parse_bucket_list(const std::string& s) {
 Json& json_kv(Json& j, std::size_t kv) {
   if (kv == Octree::infinite_bucket_size) return j.value("inf");
   return j.value(kv);
+}
+
+int Command::execute(const Options& options) const {
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::global_control> threads;
+  if (options.threads() > 0)
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                    options.threads());
+#endif
+  // A mesh is refused before it is read when it cannot fit: the limit leaves room for the octree
+  // built on it (about a quarter more when it is built in place).
+  const std::size_t available = CGAL::PR_star_octree::IO::Memory_limit::available();
+  const std::size_t limit = options.max_memory() != 0 ? options.max_memory()
+                            : available == CGAL::PR_star_octree::IO::Memory_limit::unlimited
+                                ? available
+                                : static_cast<std::size_t>(double(available) / 1.3);
+  const CGAL::PR_star_octree::IO::Memory_limit memory(limit);
+  try {
+    return run_(options);
+  } catch (const CGAL::PR_star_octree::IO::Memory_limit_error& e) {
+    throw std::runtime_error(
+        std::string(e.what()) + "; to try anyway, raise the limit with --max-memory SIZE " +
+        "(e.g. --max-memory " + std::to_string(e.needed() / (std::size_t(1) << 30) + 2) + "G, or unlimited)");
+  }
+}
+
+std::size_t parse_memory_size(const std::string& s) {
+  if (s == "unlimited") return CGAL::PR_star_octree::IO::Memory_limit::unlimited;
+  std::size_t digits = 0;
+  while (digits < s.size() && std::isdigit(static_cast<unsigned char>(s[digits]))) ++digits;
+  const std::string suffix = s.substr(digits);
+  int shift = -1;
+  if (suffix.empty() || suffix == "B")
+    shift = 0;
+  else if (suffix == "K" || suffix == "KB" || suffix == "KiB")
+    shift = 10;
+  else if (suffix == "M" || suffix == "MB" || suffix == "MiB")
+    shift = 20;
+  else if (suffix == "G" || suffix == "GB" || suffix == "GiB")
+    shift = 30;
+  else if (suffix == "T" || suffix == "TB" || suffix == "TiB")
+    shift = 40;
+  if (digits == 0 || digits > 12 || shift < 0)
+    throw Usage_error("--max-memory: '" + s + "' is not a size (e.g. 800M, 64G, 2T or unlimited)");
+  const unsigned long long n = std::stoull(s.substr(0, digits));
+  if (n == 0) throw Usage_error("--max-memory must be positive");
+  if (n > ((std::numeric_limits<std::size_t>::max)() >> shift))
+    return CGAL::PR_star_octree::IO::Memory_limit::unlimited;
+  return static_cast<std::size_t>(n) << shift;
 }
 
 Mesh read_mesh(const std::string& file, Progress_bar& progress) {

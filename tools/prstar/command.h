@@ -88,7 +88,8 @@ public:
   /// Parses `argv[first..argc)`, checks the options and the output files.
   /// \throws Usage_error (exit status 2) or std::runtime_error (an existing output without --force)
   Options parse(int argc, char** argv, int first) const;
-  int execute(const Options& options) const { return run_(options); }
+  /// Runs the command with the common settings of `options` in force (--threads, --max-memory).
+  int execute(const Options& options) const;
 
 private:
   struct Declared {
@@ -125,6 +126,10 @@ public:
   /// An output file, empty when not given: `output()` is -o/--output, `output("--csv")` another.
   std::string output(const std::string& option = "") const;
   bool force() const { return force_; }
+  /// --threads: the number of threads (0: all the machine has)
+  std::size_t threads() const { return threads_; }
+  /// --max-memory: the memory a mesh read may need, in bytes (0: the default)
+  std::size_t max_memory() const { return max_memory_; }
   bool json() const { return json_; }
   bool quiet() const { return quiet_; }
   /// Progress on stderr is wanted (the bar also needs a terminal): neither --quiet nor --json.
@@ -148,13 +153,15 @@ private:
   Arguments args_;
   std::string input_;
   std::vector<std::size_t> kvs_;
-  std::size_t max_depth_ = 0;
+  std::size_t max_depth_ = 0, threads_ = 0, max_memory_ = 0;
   std::vector<std::pair<std::string, std::string>> outputs_;
   bool force_ = false, json_ = false, quiet_ = false, quiet_silences_summary_ = false;
 };
 
 /// The mesh formats read and written, for the help texts.
 std::string mesh_formats();
+/// Parses a size in bytes: "1500000000", "800M", "64G", "2T" (powers of 1024), or "unlimited".
+std::size_t parse_memory_size(const std::string& s);
 /// Parses "N|inf[,N|inf...]".
 std::vector<std::size_t> parse_bucket_list(const std::string& s);
 /// k_v as a JSON value: a number, or the string "inf".

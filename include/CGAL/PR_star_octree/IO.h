@@ -10,6 +10,7 @@
 /// All the readers and writers of tetrahedral meshes, and the functions choosing one by the
 /// extension of the file name.
 
+#include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/gmsh.h>
 #include <CGAL/PR_star_octree/IO/medit.h>

@@ -9,6 +9,7 @@
 /// \file
 /// Reading and writing Medit binary `.meshb` files (versions 1 to 4).
 
+#include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
@@ -90,6 +91,8 @@ void read_meshb_data(std::string_view data, const std::string& name, Mesh& resul
           c.fail_at(at, std::to_string(count) + " vertices announced, but only " +
                             std::to_string(c.remaining()) + " bytes are left (" + std::to_string(per) +
                             " bytes each)");
+        check_memory(c.name(), 0, count, mesh.tetrahedra.size(), sizeof(Point_3),
+                     sizeof(typename Mesh::Tetrahedron) + sizeof(int));
         const std::size_t nv = static_cast<std::size_t>(count);
         mesh.points.reserve(nv);
         advise_huge_pages(mesh.points.data(), nv * sizeof(Point_3));
@@ -109,6 +112,8 @@ void read_meshb_data(std::string_view data, const std::string& name, Mesh& resul
           c.fail_at(at, std::to_string(count) + " tetrahedra announced, but only " +
                             std::to_string(c.remaining()) + " bytes are left (" + std::to_string(per) +
                             " bytes each)");
+        check_memory(c.name(), 0, mesh.points.size(), count, sizeof(Point_3),
+                     sizeof(typename Mesh::Tetrahedron) + sizeof(int));
         const std::size_t nt = static_cast<std::size_t>(count);
         mesh.tetrahedra.reserve(nt);
         mesh.tetrahedron_labels.reserve(nt);

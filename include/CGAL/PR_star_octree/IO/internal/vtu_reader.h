@@ -9,6 +9,7 @@
 // The VTK XML UnstructuredGrid (.vtu) reader: data arrays (ascii, base64 binary, appended raw and base64) and
 // the mesh.
 
+#include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/internal/base64.h>
 #include <CGAL/PR_star_octree/IO/internal/decompress.h>
@@ -575,6 +576,16 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
     const std::size_t nv = count_attribute("NumberOfPoints");
     const std::size_t nc = count_attribute("NumberOfCells");
     const std::size_t vertex_offset = mesh.points.size();
+    { // what the piece will hold, before anything is allocated (the cells counted as tetrahedra)
+      const auto arrays_of = [&](const char* data) {
+        std::size_t n = 0;
+        for (const Xml_element* d : xml_children(doc, piece, data))
+          n += xml_children(doc, *d, "DataArray").size();
+        return n;
+      };
+      check_memory(name, piece.line, vertex_offset + nv, mesh.tetrahedra.size() + nc, sizeof(Point_3),
+                   sizeof(typename Mesh::Tetrahedron) + 1, arrays_of("PointData"), arrays_of("CellData"));
+    }
     std::vector<char> kept; // which cells are tetrahedra (empty: all)
     if (static_cast<unsigned long long>(vertex_offset) + nv > max_vertices<Index>())
       fail(piece, "the points do not fit in the index type of the mesh");
