@@ -373,6 +373,7 @@ private:
   void split_vertices(std::vector<Index>& order);
   template <class ConcurrencyTag>
   void sort_and_orient_tetrahedra(const std::vector<Index>& from_original);
+  template <class ConcurrencyTag>
   void build_leaf_lists();
 
   Geom_traits gt_;

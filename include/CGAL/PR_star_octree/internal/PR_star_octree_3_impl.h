@@ -256,7 +256,7 @@ void PR_star_octree_3<GT, I>::build_in_place() {
   sort_and_orient_tetrahedra<ConcurrencyTag>(from_original);
   std::vector<Index>().swap(from_original);
   set_labels_uniform_if_possible();
-  build_leaf_lists();
+  build_leaf_lists<ConcurrencyTag>();
 }
 
 template <class GT, class I>
@@ -402,8 +402,9 @@ void PR_star_octree_3<GT, I>::sort_and_orient_tetrahedra(const std::vector<Index
 }
 
 template <class GT, class I>
+template <class ConcurrencyTag>
 void PR_star_octree_3<GT, I>::build_leaf_lists() {
-  const std::size_t nv = points_.size();
+  const std::size_t nv = points_.size(), nt = tetrahedra_.size();
   const std::size_t nl = leaves_.size();
   std::vector<Index> leaf_of(nv); // position of the leaf in `leaves_`
   for (std::size_t l = 0; l < nl; ++l) {
@@ -420,22 +421,50 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
     return k;
   };
   // The owner of a tetrahedron is the leaf of its smallest vertex, i.e. its first distinct leaf:
-  // as T is sorted by smallest vertex, each leaf owns a contiguous range of T.  The other leaves
-  // list it explicitly.
-  std::vector<std::size_t> owned(nl + 1, 0), shared(nl + 1, 0);
-  std::array<Index, 4> ls;
-  for (const Tetrahedron& c : tetrahedra_) {
-    const int k = distinct_leaves(c, ls);
-    ++owned[ls[0] + 1];
-    for (int i = 1; i < k; ++i) ++shared[ls[i] + 1];
-  }
+  // as T is sorted by smallest vertex, each leaf owns a contiguous range of T, found by binary
+  // search.  The other leaves list it explicitly, in increasing order: T is cut into chunks (one
+  // per task), each counting and then filling its own part of every list, so any number of
+  // threads gives the same lists.
+  const auto smallest = [&](const Tetrahedron& c) {
+    return (std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3]));
+  };
+  std::vector<std::size_t> owned(nl + 1, nt);
   for (std::size_t l = 0; l < nl; ++l) {
-    owned[l + 1] += owned[l];
-    shared[l + 1] += shared[l];
+    const Index vb = nodes_[leaves_[l]].vertex_begin;
+    owned[l] = static_cast<std::size_t>(
+        std::partition_point(tetrahedra_.begin(), tetrahedra_.end(),
+                             [&](const Tetrahedron& c) { return smallest(c) < vb; }) -
+        tetrahedra_.begin());
   }
-  if (shared[nl] >= static_cast<std::size_t>(no_node))
+  const std::size_t chunks = PR_star_octree::internal::is_parallel<ConcurrencyTag>()
+                                 ? (std::min)(std::size_t(16), (std::max)(std::size_t(1), nt >> 20))
+                                 : std::size_t(1);
+  const std::size_t chunk_size = chunks ? (nt + chunks - 1) / chunks : nt;
+  std::vector<Index> count(chunks * nl, 0); // [chunk][leaf]
+  PR_star_octree::internal::for_each_block<ConcurrencyTag>(chunks, 1, [&](std::size_t cb, std::size_t ce) {
+    std::array<Index, 4> ls;
+    for (std::size_t c = cb; c < ce; ++c)
+      for (std::size_t t = c * chunk_size; t < (std::min)(nt, (c + 1) * chunk_size); ++t) {
+        const int k = distinct_leaves(tetrahedra_[t], ls);
+        for (int i = 1; i < k; ++i) ++count[c * nl + ls[i]];
+      }
+  });
+  std::size_t total = 0;
+  for (Index n : count) total += n;
+  if (total >= static_cast<std::size_t>(no_node))
     throw std::invalid_argument("PR_star_octree_3: the leaf lists do not fit the index type");
-  leaf_tetrahedra_.assign(shared[nl], 0);
+  total = 0; // count becomes the position where each chunk writes into each list
+  std::vector<std::size_t> shared(nl + 1, 0);
+  for (std::size_t l = 0; l < nl; ++l) {
+    shared[l] = total;
+    for (std::size_t c = 0; c < chunks; ++c) {
+      const std::size_t n = count[c * nl + l];
+      count[c * nl + l] = static_cast<Index>(total);
+      total += n;
+    }
+  }
+  shared[nl] = total;
+  leaf_tetrahedra_.resize(total);
   for (std::size_t l = 0; l < nl; ++l) {
     Node& nd = nodes_[leaves_[l]];
     nd.owned_begin = static_cast<Index>(owned[l]);
@@ -443,11 +472,15 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
     nd.shared_begin = static_cast<Index>(shared[l]);
     nd.shared_end = static_cast<Index>(shared[l + 1]);
   }
-  for (std::size_t t = 0; t < tetrahedra_.size(); ++t) {
-    const int k = distinct_leaves(tetrahedra_[t], ls);
-    CGAL_assertion(t >= nodes_[leaves_[ls[0]]].owned_begin && t < nodes_[leaves_[ls[0]]].owned_end);
-    for (int i = 1; i < k; ++i) leaf_tetrahedra_[shared[ls[i]]++] = static_cast<Index>(t);
-  }
+  PR_star_octree::internal::for_each_block<ConcurrencyTag>(chunks, 1, [&](std::size_t cb, std::size_t ce) {
+    std::array<Index, 4> ls;
+    for (std::size_t c = cb; c < ce; ++c)
+      for (std::size_t t = c * chunk_size; t < (std::min)(nt, (c + 1) * chunk_size); ++t) {
+        const int k = distinct_leaves(tetrahedra_[t], ls);
+        CGAL_assertion(t >= owned[ls[0]] && t < owned[ls[0] + 1]);
+        for (int i = 1; i < k; ++i) leaf_tetrahedra_[count[c * nl + ls[i]]++] = static_cast<Index>(t);
+      }
+  });
 }
 
 // ---------------------------------------------------------------------------------------------
