@@ -167,10 +167,10 @@ public:
 
   /// Builds the PR-star octree of `mesh` without copying it (lean construction, for big meshes):
   /// its points, tetrahedra, first point-data array (the scalar field) and labels are moved into the
-  /// octree and permuted there in place; they are removed from `mesh`, whose other arrays
-  /// (other point data, cell data, label names) are left as they were.  The peak memory of the
-  /// construction is the final structure plus about one index per tetrahedron.  Named parameters
-  /// as in the other constructor.
+  /// octree and reordered there (T and the labels in place, V and the scalar field through one
+  /// transient copy); they are removed from `mesh`, whose other arrays (other point data, cell
+  /// data, label names) are left as they were.  The peak memory of the construction is about the
+  /// final structure plus one copy of V.  Named parameters as in the other constructor.
   ///
   /// \throws std::invalid_argument as the other constructor, or if the scalar field or the labels
   ///         do not have one value per vertex or tetrahedron; `mesh` has then lost its moved arrays.

@@ -219,7 +219,7 @@ void check_shuffle_invariance(const Mesh& mesh, std::size_t kv, const std::strin
   CHECK_EQUAL(a.statistics().chi, b.statistics().chi);
 }
 
-// The lean construction (the mesh moved in, permuted in place), without the tetrahedron
+// The lean construction (the mesh moved in, reordered there), without the tetrahedron
 // permutation, sequential and parallel: checked against brute force like the copying one, and the
 // same structure as the copying one, array for array.
 void check_lean_construction(const Mesh& mesh, std::size_t kv, const std::string& what) {
@@ -312,24 +312,6 @@ void test_radix_sort_in_place() {
       for (std::size_t i = 1; i < n; ++i) sorted = sorted && a[i - 1].first <= a[i].first;
       CHECK(sorted);
       std::sort(a.begin(), a.end());
-      CHECK(a == expected);
-    }
-  }
-}
-
-// The in-place gather against a plain one, on random permutations of several sizes.
-void test_gather_in_place() {
-  std::mt19937 rng(7);
-  for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(2), std::size_t(17), std::size_t(1000)}) {
-    for (int rep = 0; rep < 3; ++rep) {
-      std::vector<std::uint32_t> order(n);
-      std::iota(order.begin(), order.end(), 0u);
-      if (rep > 0) std::shuffle(order.begin(), order.end(), rng);
-      if (rep == 2 && n > 4) std::reverse(order.begin(), order.begin() + n / 2); // fixed points and cycles
-      std::vector<std::string> a(n), expected(n);
-      for (std::size_t i = 0; i < n; ++i) a[i] = "v" + std::to_string(i);
-      for (std::size_t i = 0; i < n; ++i) expected[i] = a[order[i]];
-      CGAL::PR_star_octree::internal::gather_in_place(a, order);
       CHECK(a == expected);
     }
   }
@@ -522,7 +504,6 @@ int main(int argc, char** argv) {
   test_duplicates_and_depth();
   test_errors();
   test_other_traits();
-  test_gather_in_place();
   test_radix_sort_in_place();
 
   // Generated meshes (CGAL Mesh_3 and TetGen, made by the test fixture).
