@@ -84,16 +84,19 @@ public:
   ///
   /// The tetrahedra of a leaf come in two parts.  Those whose smallest vertex is in the leaf (the
   /// leaf *owns* them) form the contiguous range `[owned_begin, owned_end)` of `T`, because `T` is
-  /// sorted by smallest vertex; they are not listed.  The others (smallest vertex in an earlier
-  /// leaf) are listed in `shared_tetrahedra_array()[shared_begin, shared_end)`.  So the lists hold
-  /// `(chi - 1) |T|` indices instead of `chi |T|`.
+  /// sorted by smallest vertex; they are not listed.  The others (smallest vertex in another leaf)
+  /// are listed, entries `[shared_begin, shared_end)` of one array for all the leaves, so the lists
+  /// hold `(chi - 1) |T|` entries instead of `chi |T|`.  They are stored compactly: each leaf's list
+  /// is cut into groups (`[group_begin, group_end)`), each a base index and 16-bit offsets from it.
   struct Node {
     Index vertex_begin; ///< first vertex of the node (depth-first numbering)
     Index vertex_end;   ///< one past the last vertex of the node
     Index owned_begin;  ///< first tetrahedron owned by the leaf (empty range for internal nodes)
     Index owned_end;    ///< one past the last tetrahedron owned by the leaf
-    Index shared_begin; ///< into `shared_tetrahedra_array()`: the leaf's other tetrahedra
+    Index shared_begin; ///< the leaf's listed tetrahedra: its entries in the shared list
     Index shared_end;
+    Index group_begin; ///< the groups of its entries (compact encoding)
+    Index group_end;
     Node_index first_child; ///< the eight children are contiguous; `no_node` for a leaf
     Node_index parent;      ///< `no_node` for the root
     bool is_leaf() const { return first_child == no_node; }
@@ -142,6 +145,9 @@ public:
 
   /// Builds the PR-star octree of `input` (copied, as above) with named parameters:
   /// - `bucket_size` (default 50), `maximum_depth` (default 32), `geom_traits` (default `Geom_traits()`);
+  /// - `vertex_permutation(bool)` (default `true`): whether the new -> original vertex numbering is
+  ///   kept (one index per vertex; without it the octree's numbering stands for the user's, see
+  ///   `has_vertex_permutation()`);
   /// - `tetrahedron_permutation(bool)` (default `true`): whether the new -> original tetrahedron
   ///   numbering is kept (one index per tetrahedron; without it `original_tetrahedron()` is not
   ///   available, `original_tetrahedron_vertices()` and everything per vertex still are);
@@ -157,6 +163,8 @@ public:
             parameters::get_parameter(np, PR_star_octree::internal_np::bucket_size), default_bucket_size)),
         max_depth_(parameters::choose_parameter(
             parameters::get_parameter(np, PR_star_octree::internal_np::maximum_depth), default_max_depth)),
+        keep_vertex_permutation_(parameters::choose_parameter(
+            parameters::get_parameter(np, PR_star_octree::internal_np::vertex_permutation), true)),
         keep_tetrahedron_permutation_(parameters::choose_parameter(
             parameters::get_parameter(np, PR_star_octree::internal_np::tetrahedron_permutation), true)) {
     static_assert(PR_star_octree::internal::Check_input_mesh<InputMesh, Point_3>::value, "");
@@ -183,6 +191,8 @@ public:
             parameters::get_parameter(np, PR_star_octree::internal_np::bucket_size), default_bucket_size)),
         max_depth_(parameters::choose_parameter(
             parameters::get_parameter(np, PR_star_octree::internal_np::maximum_depth), default_max_depth)),
+        keep_vertex_permutation_(parameters::choose_parameter(
+            parameters::get_parameter(np, PR_star_octree::internal_np::vertex_permutation), true)),
         keep_tetrahedron_permutation_(parameters::choose_parameter(
             parameters::get_parameter(np, PR_star_octree::internal_np::tetrahedron_permutation), true)) {
     check_bucket_size();
@@ -230,14 +240,16 @@ public:
   /// the leaves in depth-first order (their vertex ranges are consecutive)
   const std::vector<Node_index>& leaves() const { return leaves_; }
   std::size_t number_of_leaves() const { return leaves_.size(); }
-  /// the tetrahedra incident in the vertices of leaf `n` (its star), in increasing index order
+  /// the tetrahedra incident in the vertices of leaf `n` (its star): the listed ones in increasing
+  /// index order, then the owned range
   Leaf_tetrahedra leaf_tetrahedra(Node_index n) const {
     const Node& nd = nodes_[n];
-    return Leaf_tetrahedra(leaf_tetrahedra_.data() + nd.shared_begin, nd.shared_end - nd.shared_begin,
+    return Leaf_tetrahedra(leaf_offsets_.data() + nd.shared_begin, nd.shared_end - nd.shared_begin,
+                           leaf_groups_.data() + nd.group_begin, nd.group_end - nd.group_begin,
                            nd.owned_begin, nd.owned_end);
   }
-  /// the concatenation of the listed (shared) parts of all leaves: `(chi - 1) |T|` indices
-  const std::vector<Index>& shared_tetrahedra_array() const { return leaf_tetrahedra_; }
+  /// the number of listed (shared) entries of all leaves: `(chi - 1) |T|`
+  std::size_t number_of_shared_entries() const { return leaf_offsets_.size(); }
   /// the vertex range of node `n`
   std::pair<Index, Index> vertex_range(Node_index n) const {
     return {nodes_[n].vertex_begin, nodes_[n].vertex_end};
@@ -296,8 +308,12 @@ public:
 
   /// \name Back to the user's numbering
   /// @{
-  /// the original index of vertex `v`
-  Index original_vertex(Index v) const { return vertex_to_original_[v]; }
+  /// whether the new -> original vertex numbering was kept (named parameter `vertex_permutation`,
+  /// default `true`); without it, the octree's numbering stands for the user's: every result "in
+  /// the user's numbering" is then in the octree's
+  bool has_vertex_permutation() const { return keep_vertex_permutation_; }
+  /// the original index of vertex `v` (`v` itself without `has_vertex_permutation()`)
+  Index original_vertex(Index v) const { return keep_vertex_permutation_ ? vertex_to_original_[v] : v; }
   /// whether the new -> original tetrahedron numbering was kept (named parameter
   /// `tetrahedron_permutation`, default `true`)
   bool has_tetrahedron_permutation() const { return keep_tetrahedron_permutation_; }
@@ -307,7 +323,8 @@ public:
     CGAL_precondition(has_tetrahedron_permutation());
     return tetrahedron_to_original_[t];
   }
-  /// new -> original vertex indices (a permutation of `[0, |V|)`)
+  /// new -> original vertex indices (a permutation of `[0, |V|)`; empty without
+  /// `has_vertex_permutation()`)
   const std::vector<Index>& vertex_permutation() const { return vertex_to_original_; }
   /// new -> original tetrahedron indices (empty without `has_tetrahedron_permutation()`)
   const std::vector<Index>& tetrahedron_permutation() const { return tetrahedron_to_original_; }
@@ -317,11 +334,16 @@ public:
   std::array<Index, 4> original_tetrahedron_vertices(Index t) const {
     Tetrahedron c = tetrahedra_[t];
     if (is_reoriented(t)) std::swap(c[2], c[3]);
-    for (Index& v : c) v = vertex_to_original_[v];
+    for (Index& v : c) v = original_vertex(v);
     return c;
   }
   /// original -> new vertex indices (computed, `O(|V|)`)
-  std::vector<Index> vertex_from_original() const { return inverse(vertex_to_original_); }
+  std::vector<Index> vertex_from_original() const {
+    if (keep_vertex_permutation_) return inverse(vertex_to_original_);
+    std::vector<Index> identity(points_.size());
+    std::iota(identity.begin(), identity.end(), Index(0));
+    return identity;
+  }
   /// original -> new tetrahedron indices (computed, `O(|T|)`; empty without
   /// `has_tetrahedron_permutation()`)
   std::vector<Index> tetrahedron_from_original() const { return inverse(tetrahedron_to_original_); }
@@ -379,6 +401,7 @@ private:
   Geom_traits gt_;
   std::size_t bucket_size_;
   std::size_t max_depth_;
+  bool keep_vertex_permutation_ = true;
   bool keep_tetrahedron_permutation_ = true;
   std::size_t depth_ = 0;
   std::size_t depth_limited_leaves_ = 0;
@@ -396,7 +419,8 @@ private:
   std::vector<Tetrahedron> tetrahedra_;
   std::vector<Node> nodes_;
   std::vector<Node_index> leaves_;
-  std::vector<Index> leaf_tetrahedra_;
+  std::vector<std::uint16_t> leaf_offsets_;                                   // the shared lists, encoded
+  std::vector<PR_star_octree::internal::Leaf_list_group<Index>> leaf_groups_; // and their groups
   std::vector<Index> vertex_to_original_;
   std::vector<Index> tetrahedron_to_original_;
   std::vector<std::uint64_t> reoriented_;

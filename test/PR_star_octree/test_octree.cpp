@@ -245,7 +245,8 @@ void check_lean_construction(const Mesh& mesh, std::size_t kv, const std::string
 
   for (int parallel = 0; parallel < 2; ++parallel) {
     Mesh m = labelled;
-    const auto np = params::bucket_size(kv).tetrahedron_permutation(false);
+    // the second run also drops the vertex permutation: the octree's numbering stands for the user's
+    const auto np = params::bucket_size(kv).tetrahedron_permutation(false).vertex_permutation(parallel == 0);
     const Tree c = parallel ? Tree(std::move(m), np.concurrency_tag(CGAL::Parallel_if_available_tag()))
                             : Tree(std::move(m), np.concurrency_tag(CGAL::Sequential_tag()));
     CHECK(!c.has_tetrahedron_permutation());
@@ -253,8 +254,13 @@ void check_lean_construction(const Mesh& mesh, std::size_t kv, const std::string
     CHECK(c.points() == a.points());
     CHECK(c.scalars() == a.scalars());
     CHECK(c.tetrahedra() == a.tetrahedra());
-    CHECK(c.vertex_permutation() == a.vertex_permutation());
-    CHECK(c.shared_tetrahedra_array() == a.shared_tetrahedra_array());
+    CHECK_EQUAL(c.has_vertex_permutation(), parallel == 0);
+    if (parallel == 0)
+      CHECK(c.vertex_permutation() == a.vertex_permutation());
+    else
+      CHECK(c.vertex_permutation().empty() && c.original_vertex(Tree::Index(3)) == Tree::Index(3) &&
+            c.vertex_from_original()[5] == Tree::Index(5));
+    CHECK_EQUAL(c.number_of_shared_entries(), a.number_of_shared_entries());
     CHECK(c.leaves() == a.leaves());
     CHECK_EQUAL(c.number_of_nodes(), a.number_of_nodes());
     bool same_nodes = true, same_labels = true, same_user_tetrahedra = true;
@@ -263,13 +269,16 @@ void check_lean_construction(const Mesh& mesh, std::size_t kv, const std::string
       same_nodes = same_nodes && x.vertex_begin == y.vertex_begin && x.vertex_end == y.vertex_end &&
                    x.owned_begin == y.owned_begin && x.owned_end == y.owned_end &&
                    x.shared_begin == y.shared_begin && x.shared_end == y.shared_end &&
+                   x.group_begin == y.group_begin && x.group_end == y.group_end &&
                    x.first_child == y.first_child && x.parent == y.parent;
     }
     for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
       same_labels = same_labels && c.tetrahedron_label(Tree::Index(t)) == a.tetrahedron_label(Tree::Index(t));
+      auto user = c.original_tetrahedron_vertices(Tree::Index(t)); // octree numbering without permutation
+      if (!c.has_vertex_permutation())
+        for (auto& v : user) v = a.original_vertex(v);
       same_user_tetrahedra = same_user_tetrahedra &&
-                             c.original_tetrahedron_vertices(Tree::Index(t)) ==
-                                 a.original_tetrahedron_vertices(Tree::Index(t)) &&
+                             user == a.original_tetrahedron_vertices(Tree::Index(t)) &&
                              c.is_reoriented(Tree::Index(t)) == a.is_reoriented(Tree::Index(t));
     }
     CHECK(same_nodes);
@@ -279,7 +288,8 @@ void check_lean_construction(const Mesh& mesh, std::size_t kv, const std::string
     CHECK_EQUAL(sc.reoriented_tetrahedra, sa.reoriented_tetrahedra);
     CHECK_EQUAL(sc.degenerate_tetrahedra, sa.degenerate_tetrahedra);
     CHECK_EQUAL(sc.subdomains, sa.subdomains);
-    CHECK_EQUAL(sa.bytes.permutations - sc.bytes.permutations, mesh.tetrahedra.size() * sizeof(Tree::Index));
+    CHECK_EQUAL(sa.bytes.permutations - sc.bytes.permutations,
+                (mesh.tetrahedra.size() + (parallel ? mesh.points.size() : 0)) * sizeof(Tree::Index));
   }
 }
 
@@ -314,6 +324,66 @@ void test_radix_sort_in_place() {
       std::sort(a.begin(), a.end());
       CHECK(a == expected);
     }
+  }
+}
+
+// A Kuhn lattice of n^3 cubes (6 n^3 tetrahedra), vertices listed in a shuffled order.
+Mesh shuffled_lattice(std::size_t n, unsigned seed) {
+  const std::size_t side = n + 1, nv = side * side * side;
+  std::vector<std::uint32_t> label(nv); // the vertex at lattice position i gets number label[i]
+  std::iota(label.begin(), label.end(), 0u);
+  std::mt19937 rng(seed);
+  std::shuffle(label.begin(), label.end(), rng);
+  Mesh m;
+  m.points.resize(nv);
+  for (std::size_t z = 0; z < side; ++z)
+    for (std::size_t y = 0; y < side; ++y)
+      for (std::size_t x = 0; x < side; ++x)
+        m.points[label[x + side * (y + side * z)]] = Point(double(x), double(y), double(z));
+  const int paths[6][2] = {{1, 3}, {1, 5}, {2, 3}, {2, 6}, {4, 5}, {4, 6}};
+  for (std::size_t z = 0; z < n; ++z)
+    for (std::size_t y = 0; y < n; ++y)
+      for (std::size_t x = 0; x < n; ++x) {
+        std::uint32_t c[8];
+        for (int b = 0; b < 8; ++b)
+          c[b] = label[(x + (b & 1)) + side * ((y + ((b >> 1) & 1)) + side * (z + ((b >> 2) & 1)))];
+        for (const auto& p : paths) m.tetrahedra.push_back({c[0], c[p[0]], c[p[1]], c[7]});
+      }
+  return m;
+}
+
+// The compact leaf lists on a mesh big enough for several groups per leaf (indices 2^16 apart):
+// every invariant against brute force, and the random-access iterator (operator[], +=, --, the
+// shared part) against a plain decoded copy.
+void test_compact_leaf_lists() {
+  using Tree = CGAL::PR_star_octree_3<>;
+  const Mesh mesh = shuffled_lattice(30, 5); // 162,000 tetrahedra
+  const auto in = CGAL::PR_star_octree::make_input(mesh);
+  for (std::size_t kv : {std::size_t(8), std::size_t(60)}) {
+    const Tree tree(in, kv);
+    check_invariants(tree, in, "lattice 30, k_v=" + std::to_string(kv));
+    std::size_t multi_group_leaves = 0;
+    bool same = true;
+    for (auto n : tree.leaves()) {
+      const auto tets = tree.leaf_tetrahedra(n);
+      const std::vector<Tree::Index> plain(tets.begin(), tets.end());
+      multi_group_leaves += tree.node(n).group_end - tree.node(n).group_begin > 1;
+      same = same && plain.size() == tets.size();
+      for (std::size_t i = 0; i < plain.size() && same; i += 7) same = tets[i] == plain[i];
+      auto it = tets.end();
+      for (std::size_t i = plain.size(); i-- > 0 && same;) same = *--it == plain[i];
+      for (std::size_t i = 0; i + 3 < plain.size() && same; i += 5) {
+        auto j = tets.begin() + std::ptrdiff_t(i);
+        j += 3;
+        same =
+            *j == plain[i + 3] && j - tets.begin() == std::ptrdiff_t(i + 3) && (j -= 2, *j == plain[i + 1]);
+      }
+      const auto shared = tets.shared();
+      same = same && std::size_t(shared.size()) == tree.node(n).shared_end - tree.node(n).shared_begin &&
+             std::equal(shared.begin(), shared.end(), plain.begin());
+    }
+    CHECK(same);
+    CHECK(multi_group_leaves > 0); // the multi-group path was exercised
   }
 }
 
@@ -505,6 +575,7 @@ int main(int argc, char** argv) {
   test_errors();
   test_other_traits();
   test_radix_sort_in_place();
+  test_compact_leaf_lists();
 
   // Generated meshes (CGAL Mesh_3 and TetGen, made by the test fixture).
   for (const char* name :

@@ -31,10 +31,11 @@ int run_boundary(const Options& o) {
   Mesh mesh = read_mesh(input, progress); // written back with the computed point arrays
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
-  // Without an output to write, the octree takes the mesh over (no second copy of V and T).
+  // Without an output to write, the octree takes the mesh over (no second copy of V and T) and
+  // keeps no permutation (only counts are reported).
   const auto np = params::bucket_size(kv).maximum_depth(o.max_depth()).tetrahedron_permutation(false);
-  const Octree tree =
-      out.empty() ? Octree(std::move(mesh), np) : Octree(CGAL::PR_star_octree::make_input(mesh), np);
+  const Octree tree = out.empty() ? Octree(std::move(mesh), np.vertex_permutation(false))
+                                  : Octree(CGAL::PR_star_octree::make_input(mesh), np);
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("classifying the vertices");
   std::vector<Vertex_type> types(nv, Vertex_type::UNREFERENCED); // the user's numbering

@@ -93,7 +93,8 @@ int run_curvature(const Options& o) {
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
   const auto np = params::bucket_size(kv).maximum_depth(o.max_depth()).tetrahedron_permutation(false);
-  const Octree tree = lean ? Octree(std::move(mesh), np) : Octree(CGAL::PR_star_octree::make_input(mesh), np);
+  const Octree tree = lean ? Octree(std::move(mesh), np.vertex_permutation(false))
+                           : Octree(CGAL::PR_star_octree::make_input(mesh), np);
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("computing the distortion");
   Curvature_arrays curv(nv, !lean); // the user's numbering

@@ -110,7 +110,9 @@ void report_statistics(Mesh mesh, const std::string& name, const std::vector<std
   CGAL::PR_star_octree::Simplex_counts counts;
   for (std::size_t kv : kvs) {
     progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
-    const auto np = params::bucket_size(kv).maximum_depth(max_depth).tetrahedron_permutation(false);
+    const auto np =
+        params::bucket_size(kv).maximum_depth(max_depth).tetrahedron_permutation(false).vertex_permutation(
+            false);
     const bool last = stats.size() + 1 == kvs.size();
     const Octree tree =
         last ? Octree(std::move(mesh), np) : Octree(CGAL::PR_star_octree::make_input(mesh), np);

@@ -393,9 +393,12 @@ int Command::execute(const Options& options) const {
   try {
     return run_(options);
   } catch (const CGAL::PR_star_octree::IO::Memory_limit_error& e) {
-    throw std::runtime_error(
-        std::string(e.what()) + "; to try anyway, raise the limit with --max-memory SIZE " +
-        "(e.g. --max-memory " + std::to_string(e.needed() / (std::size_t(1) << 30) + 2) + "G, or unlimited)");
+    throw std::runtime_error(std::string(e.what()) +
+                             (options.max_memory() != 0 ? " (the limit of --max-memory)"
+                                                        : " (the limit: the memory available / 1.3)") +
+                             "; to try anyway, raise the limit with --max-memory SIZE " +
+                             "(e.g. --max-memory " + std::to_string(e.needed() / (std::size_t(1) << 30) + 2) +
+                             "G, or unlimited)");
   }
 }
 

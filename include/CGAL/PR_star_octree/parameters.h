@@ -30,6 +30,7 @@ namespace PR_star_octree {
   X(progress)                                                                                                \
   X(domain_curvature_map)                                                                                    \
   X(vertex_type_map)                                                                                         \
+  X(vertex_permutation)                                                                                      \
   X(tetrahedron_permutation)                                                                                 \
   X(concurrency_tag)
 
@@ -64,7 +65,8 @@ CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_TAG)
 /// `max_edge_length(double)`, `max_rounds(std::size_t)`, `priority(F)` | `simplify()` | 0, infinity, 1000,
 /// `Edge_length_priority` | | `progress(F)` | every leaf-streaming function | none | |
 /// `domain_curvature_map(PMap)`, `vertex_type_map(PMap)` | `compute_discrete_distortion()` | none | |
-/// `tetrahedron_permutation(bool)` | the `PR_star_octree_3` constructors | `true` | |
+/// `vertex_permutation(bool)`, `tetrahedron_permutation(bool)` | the `PR_star_octree_3` constructors |
+/// `true` | |
 /// `concurrency_tag(Tag)` | the `PR_star_octree_3` constructors | `CGAL::Parallel_if_available_tag()` |
 namespace parameters {
 using namespace CGAL::parameters;

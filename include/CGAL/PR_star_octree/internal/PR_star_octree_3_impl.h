@@ -230,7 +230,10 @@ void PR_star_octree_3<GT, I>::build_in_place() {
   gather(points_);
   if (has_scalar_) gather(scalars_);
   std::vector<Index> from_original = inverse(order);
-  vertex_to_original_ = std::move(order);
+  if (keep_vertex_permutation_)
+    vertex_to_original_ = std::move(order);
+  else
+    std::vector<Index>().swap(order);
 
   // 3. T re-indexed, sorted, oriented; then the leaf lists.
   sort_and_orient_tetrahedra<ConcurrencyTag>(from_original);
@@ -249,7 +252,7 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
   const std::size_t nv = order.size();
   nodes_.clear();
   leaves_.clear();
-  nodes_.push_back(Node{0, static_cast<Index>(nv), 0, 0, 0, 0, no_node, no_node});
+  nodes_.push_back(Node{0, static_cast<Index>(nv), 0, 0, 0, 0, 0, 0, no_node, no_node});
   std::vector<Item> stack{Item{0, root_lo_, root_hi_, 0}};
   std::vector<Index> buffer;
   std::vector<unsigned char> code;
@@ -304,7 +307,7 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
     nodes_[item.node].first_child = first;
     for (unsigned c = 0; c < 8; ++c)
       nodes_.push_back(Node{static_cast<Index>(b + start[c]), static_cast<Index>(b + start[c + 1]), 0, 0, 0,
-                            0, no_node, item.node});
+                            0, 0, 0, no_node, item.node});
     // Push the children in reverse so that child 0 is visited first: leaves come out depth first.
     for (unsigned c = 8; c-- > 0;) {
       Item child{static_cast<Node_index>(first + c), item.lo, item.hi, item.depth + 1};
@@ -444,7 +447,7 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
     }
   }
   shared[nl] = total;
-  leaf_tetrahedra_.resize(total);
+  std::vector<Index> list(total);
   for (std::size_t l = 0; l < nl; ++l) {
     Node& nd = nodes_[leaves_[l]];
     nd.owned_begin = static_cast<Index>(owned[l]);
@@ -458,8 +461,47 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
       for (std::size_t t = c * chunk_size; t < (std::min)(nt, (c + 1) * chunk_size); ++t) {
         const int k = distinct_leaves(tetrahedra_[t], ls);
         CGAL_assertion(t >= owned[ls[0]] && t < owned[ls[0] + 1]);
-        for (int i = 1; i < k; ++i) leaf_tetrahedra_[count[c * nl + ls[i]]++] = static_cast<Index>(t);
+        for (int i = 1; i < k; ++i) list[count[c * nl + ls[i]]++] = static_cast<Index>(t);
       }
+  });
+  std::vector<Index>().swap(count);
+
+  // The compact encoding, leaf by leaf: a new group when an index is 2^16 or more past the base.
+  const auto for_each_group = [&](std::size_t l, auto f) { // f(group position in leaf, first entry)
+    const std::size_t b = shared[l], e = shared[l + 1];
+    std::size_t g = 0;
+    for (std::size_t i = b; i < e; ++i)
+      if (i == b || list[i] - list[g] > 0xFFFF) {
+        g = i;
+        f(i);
+      }
+  };
+  std::vector<Index> groups(nl + 1, 0);
+  PR_star_octree::internal::for_each_block<ConcurrencyTag>(nl, 1024, [&](std::size_t lb, std::size_t le) {
+    for (std::size_t l = lb; l < le; ++l) for_each_group(l, [&](std::size_t) { ++groups[l + 1]; });
+  });
+  for (std::size_t l = 0; l < nl; ++l) groups[l + 1] += groups[l];
+  leaf_offsets_.resize(total);
+  leaf_groups_.resize(groups[nl]);
+  PR_star_octree::internal::for_each_block<ConcurrencyTag>(nl, 1024, [&](std::size_t lb, std::size_t le) {
+    for (std::size_t l = lb; l < le; ++l) {
+      Node& nd = nodes_[leaves_[l]];
+      nd.group_begin = groups[l];
+      nd.group_end = groups[l + 1];
+      std::size_t g = groups[l];
+      for_each_group(l, [&](std::size_t first) {
+        if (g > groups[l]) leaf_groups_[g - 1].end = static_cast<Index>(first - shared[l]);
+        leaf_groups_[g++] = {list[first], 0};
+      });
+      if (g > groups[l]) leaf_groups_[g - 1].end = static_cast<Index>(shared[l + 1] - shared[l]);
+      std::size_t start = shared[l];
+      for (std::size_t k = groups[l]; k < groups[l + 1]; ++k) {
+        const std::size_t end = shared[l] + leaf_groups_[k].end;
+        for (std::size_t i = start; i < end; ++i)
+          leaf_offsets_[i] = static_cast<std::uint16_t>(list[i] - leaf_groups_[k].base);
+        start = end;
+      }
+    }
   });
 }
 
@@ -482,7 +524,7 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
   s.coincident_leaves = coincident_leaves_;
   s.reoriented_tetrahedra = reoriented_count_;
   s.degenerate_tetrahedra = degenerate_tetrahedra_;
-  s.leaf_tetrahedra_entries = leaf_tetrahedra_.size() + tetrahedra_.size();
+  s.leaf_tetrahedra_entries = leaf_offsets_.size() + tetrahedra_.size();
   for (Node_index n : leaves_) {
     const Node& nd = nodes_[n];
     if (nd.vertex_begin == nd.vertex_end) ++s.empty_leaves;
@@ -515,7 +557,9 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
     s.subdomains[uniform_label_] = tetrahedra_.size();
   s.bytes.tetrahedra = tetrahedra_.capacity() * sizeof(Tetrahedron);
   s.bytes.nodes = nodes_.capacity() * sizeof(Node) + leaves_.capacity() * sizeof(Node_index);
-  s.bytes.leaf_tetrahedra = leaf_tetrahedra_.capacity() * sizeof(Index);
+  s.bytes.leaf_tetrahedra =
+      leaf_offsets_.capacity() * sizeof(std::uint16_t) +
+      leaf_groups_.capacity() * sizeof(PR_star_octree::internal::Leaf_list_group<Index>);
   s.bytes.permutations =
       (vertex_to_original_.capacity() + tetrahedron_to_original_.capacity()) * sizeof(Index) +
       reoriented_.capacity() * sizeof(std::uint64_t);

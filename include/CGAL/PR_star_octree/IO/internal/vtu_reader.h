@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <istream>
 #include <limits>
 #include <map>
@@ -576,7 +577,9 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
     const std::size_t nv = count_attribute("NumberOfPoints");
     const std::size_t nc = count_attribute("NumberOfCells");
     const std::size_t vertex_offset = mesh.points.size();
-    { // what the piece will hold, before anything is allocated (the cells counted as tetrahedra)
+    // What the piece will hold (the cells counted as tetrahedra), checked against the memory
+    // limit once its points were found in the file, before they are stored.
+    const auto check_piece_memory = [&] {
       const auto arrays_of = [&](const char* data) {
         std::size_t n = 0;
         for (const Xml_element* d : xml_children(doc, piece, data))
@@ -585,7 +588,7 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
       };
       check_memory(name, piece.line, vertex_offset + nv, mesh.tetrahedra.size() + nc, sizeof(Point_3),
                    sizeof(typename Mesh::Tetrahedron) + 1, arrays_of("PointData"), arrays_of("CellData"));
-    }
+    };
     std::vector<char> kept; // which cells are tetrahedra (empty: all)
     if (static_cast<unsigned long long>(vertex_offset) + nv > max_vertices<Index>())
       fail(piece, "the points do not fit in the index type of the mesh");
@@ -612,11 +615,14 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
       if (da.size() != 1)
         fail(*points, "<Points> must hold one DataArray, found " + std::to_string(da.size()));
       if (components(*da[0]) != 3) fail(*da[0], "the points DataArray must have NumberOfComponents=\"3\"");
+      const std::function<void()> check_points = check_piece_memory;
       struct Point_sink { // straight into the points, without an array of coordinates
         std::vector<Point_3>& points;
         double c[3];
         int k;
+        const std::function<void()>& check;
         void reserve(std::size_t n) {
+          check();
           points.reserve(points.size() + n / 3);
           advise_huge_pages(points.data() + points.size(),
                             (points.capacity() - points.size()) * sizeof(Point_3));
@@ -630,7 +636,7 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
             }
           }
         }
-      } point_sink{mesh.points, {0, 0, 0}, 0};
+      } point_sink{mesh.points, {0, 0, 0}, 0, check_points};
       arrays.read_into<double>(*da[0], 3 * nv, point_sink);
     }
 
