@@ -115,10 +115,17 @@ public:
       binary_values(count, type, out, nullptr, what);
       return;
     }
-    if (out) capped_reserve(*out, count, r.remaining_bytes(), 2);
+    if (out) {
+      capped_reserve(*out, count, r.remaining_bytes(), 2);
+      advise_huge_pages(out->data(), out->capacity() * sizeof(double));
+    }
     for (std::size_t i = 0; i < count; ++i) {
-      const std::string_view tok = r.expect_token(what);
       double v;
+      if (r.fast_double(v)) {
+        if (out) out->push_back(v);
+        continue;
+      }
+      const std::string_view tok = r.expect_token(what);
       const char* why = parse_double(tok, v);
       if (why != nullptr && (out != nullptr || std::string_view(why).substr(0, 13) != "is not finite"))
         r.fail(std::string(what) + " value " + std::to_string(i) + ": " + quote(tok) + " " + why);
@@ -132,6 +139,7 @@ public:
       return;
     }
     capped_reserve(out, count, r.remaining_bytes(), 2);
+    advise_huge_pages(out.data(), out.capacity() * sizeof(long long));
     for (std::size_t i = 0; i < count; ++i) out.push_back(r.expect_integer(what));
   }
 
@@ -339,6 +347,8 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
         nc = a;
         capped_reserve(starts, nc + 1, r.remaining_bytes(), 4);
         capped_reserve(connectivity, b, r.remaining_bytes(), 2);
+        advise_huge_pages(starts.data(), starts.capacity() * sizeof(long long));
+        advise_huge_pages(connectivity.data(), connectivity.capacity() * sizeof(long long));
         starts.push_back(0);
         std::size_t used = 0;
         for (std::size_t i = 0; i < nc; ++i) {
