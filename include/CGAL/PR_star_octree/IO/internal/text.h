@@ -251,7 +251,6 @@ public:
   std::size_t line() const { return item_line_ != computed ? item_line_ : line_at(item_pos_); }
   std::size_t remaining_bytes() const { return text_.size() - pos_; }
   bool at_end() const { return pos_ >= text_.size(); }
-  char comment() const { return comment_; }
 
   /// Sets the item being read (e.g. "vertex", 12): `fail()` then prefixes its message with
   /// "vertex 12: ".  `kind` must outlive its use (a string literal).
