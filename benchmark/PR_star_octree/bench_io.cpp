@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // bench_io: reading speed of the binary formats on a large lattice (issue 12's target: a
-// 100M-tetrahedra zlib VTU and binary .msh read at >= 300 MB/s of decoded data).
+// 100M-tetrahedra zlib VTU and binary .msh read at >= 300 MB/s of decoded data), and with --text
+// of the text formats (issue 10's target: >= 100 MB/s of file text).
 //
-// usage: bench_io --cells N [--reps R] [--keep] DIR
+// usage: bench_io --cells N [--reps R] [--keep] [--text] DIR
 //   makes a jittered N x N x N Kuhn lattice (6 N^3 tetrahedra, a scalar field, two labels), writes it
 //   to DIR as lattice.vtu (appended zlib, ParaView's default) and lattice.msh (gmsh 4.1 binary), then
 //   reads each file R times (default 3), each read in a forked child: best wall and CPU seconds, the
@@ -12,6 +13,9 @@
 //   and offsets, UInt8 types, Int32 labels, Float64 scalars; .msh 8-byte tags and Float64
 //   coordinates per node, 8-byte tag and 4 node tags per tetrahedron), decoded MB per second, and
 //   the child's peak RSS.  The files are removed at the end unless --keep.
+//   --text: instead, writes the lattice in every text format (Medit .mesh, TetGen .node/.ele,
+//   legacy VTK ASCII, gmsh 2.2 and 4.1 ASCII, tet-OFF, ascii VTU) and reads each the same way:
+//   best wall and CPU seconds, MB of file text per second, peak RSS.
 //   Prints a Markdown table on stdout.
 
 #include <CGAL/PR_star_octree/IO.h>
@@ -89,12 +93,76 @@ Read_result read_once(const std::string& file) {
   });
 }
 
+/// The text formats: each written by the library's writer, then read `reps` times.
+int text_formats(std::size_t cells, int reps, bool keep, const std::string& dir) {
+  namespace IO = CGAL::PR_star_octree::IO;
+  struct Text_file {
+    std::string name, label;
+    std::vector<std::string> parts; // the files read (a TetGen mesh is two)
+  };
+  const std::vector<Text_file> files = {
+      {dir + "/lattice.mesh", "Medit .mesh", {dir + "/lattice.mesh"}},
+      {dir + "/lattice.node", "TetGen .node/.ele", {dir + "/lattice.node", dir + "/lattice.ele"}},
+      {dir + "/lattice.vtk", "legacy VTK ASCII", {dir + "/lattice.vtk"}},
+      {dir + "/lattice22.msh", "gmsh 2.2 ASCII", {dir + "/lattice22.msh"}},
+      {dir + "/lattice41.msh", "gmsh 4.1 ASCII", {dir + "/lattice41.msh"}},
+      {dir + "/lattice.off", "tet-OFF", {dir + "/lattice.off"}},
+      {dir + "/lattice_ascii.vtu", "VTU ascii", {dir + "/lattice_ascii.vtu"}}};
+  std::size_t nv = 0, nt = 0;
+  {
+    const double t0 = prstar_bench::now();
+    const Mesh m = lattice(cells);
+    nv = m.points.size();
+    nt = m.tetrahedra.size();
+    std::cerr << "lattice: " << nv << " vertices, " << nt << " tetrahedra (" << prstar_bench::now() - t0
+              << " s)\n";
+    IO::write_medit(files[0].name, m);
+    IO::write_tetgen(files[1].name, m);
+    IO::write_vtk(files[2].name, m);
+    IO::Gmsh_write_options o22;
+    o22.version = IO::Gmsh_version::msh22;
+    IO::write_gmsh(files[3].name, m, o22);
+    IO::write_gmsh(files[4].name, m);
+    IO::write_tet_off(files[5].name, m);
+    IO::write_vtu(files[6].name, m, {}, false);
+  }
+  std::cout << "| file | format | vertices | tetrahedra | file MB | read s (best of " << reps
+            << ") | read CPU s | MB/s of file text (wall) | MB/s (CPU) | peak RSS MB |\n"
+            << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Text_file& f : files) {
+    double bytes = 0;
+    for (const std::string& part : f.parts) bytes += double(fs::file_size(part));
+    Read_result best;
+    best.wall = best.cpu = 1e300;
+    for (int r = 0; r < reps; ++r) {
+      const Read_result x = read_once(f.name);
+      if (!x.ok || x.tetrahedra != nt || x.vertices != nv) {
+        std::cerr << f.name << ": read failed or wrong counts\n";
+        return 1;
+      }
+      best.wall = std::min(best.wall, x.wall);
+      best.cpu = std::min(best.cpu, x.cpu);
+      best.peak_rss_bytes = std::max(best.peak_rss_bytes, x.peak_rss_bytes);
+    }
+    char line[512];
+    std::snprintf(line, sizeof line, "| %s | %s | %zu | %zu | %.0f | %.2f | %.2f | %.0f | %.0f | %.0f |\n",
+                  prstar_bench::base_name(f.name).c_str(), f.label.c_str(), nv, nt, bytes / 1e6, best.wall,
+                  best.cpu, bytes / 1e6 / best.wall, bytes / 1e6 / best.cpu,
+                  double(best.peak_rss_bytes) / 1e6);
+    std::cout << line << std::flush;
+  }
+  if (!keep)
+    for (const Text_file& f : files)
+      for (const std::string& part : f.parts) fs::remove(part);
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
   std::size_t cells = 0;
   int reps = 3;
-  bool keep = false;
+  bool keep = false, text = false;
   std::string dir;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -104,6 +172,8 @@ int main(int argc, char** argv) {
       reps = std::max(1, std::atoi(argv[++i]));
     else if (a == "--keep")
       keep = true;
+    else if (a == "--text")
+      text = true;
     else if (!a.empty() && a[0] != '-' && dir.empty())
       dir = a;
     else {
@@ -112,10 +182,11 @@ int main(int argc, char** argv) {
     }
   }
   if (cells == 0 || dir.empty()) {
-    std::cerr << "usage: bench_io --cells N [--reps R] [--keep] DIR\n";
+    std::cerr << "usage: bench_io --cells N [--reps R] [--keep] [--text] DIR\n";
     return 2;
   }
   fs::create_directories(dir);
+  if (text) return text_formats(cells, reps, keep, dir);
   const std::string vtu = dir + "/lattice.vtu", msh = dir + "/lattice.msh";
   std::size_t nv = 0, nt = 0;
   double write_vtu_s = 0, write_msh_s = 0;

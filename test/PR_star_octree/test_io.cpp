@@ -710,6 +710,91 @@ static void test_shared(const prstar_test::Data_folders& data) {
   }
 }
 
+// Line numbers are counted only when an error is reported, and regular lines are read by fast paths
+// that leave anything unusual to the token code: the messages must name the same line and item as
+// the token code did, after comments, blank lines, CRLF line ends and binary data.
+static void test_line_numbers_after_fast_paths() {
+  // a 3 x 3 x 3 grid of points, 16 tetrahedra (i, i+1, i+3, i+9)
+  std::vector<std::string> points, tets;
+  for (int z = 0; z < 3; ++z)
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 3; ++x)
+        points.push_back(std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z));
+  for (int i = 0; i < 16; ++i)
+    tets.push_back(std::to_string(i) + " " + std::to_string(i + 1) + " " + std::to_string(i + 3) + " " +
+                   std::to_string(i + 9));
+  const auto one_based = [](int i) {
+    return std::to_string(i + 1) + " " + std::to_string(i + 2) + " " + std::to_string(i + 4) + " " +
+           std::to_string(i + 10);
+  };
+
+  // tet-OFF, CRLF: points on lines 2..30 (a comment after point 5, a blank line after point 10, a
+  // comment line after point 12), tetrahedra on lines 31..46
+  const auto off = [&](int bad_tet, const std::string& bad_line) {
+    std::string t = "27 16\r\n";
+    for (int i = 0; i < 27; ++i) {
+      t += points[std::size_t(i)] + (i == 5 ? " # c" : "") + "\r\n";
+      if (i == 10) t += "\r\n";
+      if (i == 12) t += "# comment line\r\n";
+    }
+    for (int i = 0; i < 16; ++i) t += (i == bad_tet ? bad_line : tets[std::size_t(i)]) + "\r\n";
+    return t;
+  };
+  Mesh m = read_ok(put("fast_ok.off", off(13, "0 1 +2 3")),
+                   [](const std::string& f, Mesh& mm) { IO::read_tet_off(f, mm); });
+  CHECK(m.points.size() == 27 && m.tetrahedra.size() == 16 && m.tetrahedra[13] == (Tet{0, 1, 2, 3}));
+  EXPECT_ERROR(put("fast_bad.off", off(14, "0 1 2 1.5")), read_tet_off,
+               {":45: tetrahedron 15: vertex index '1.5' is not an integer"});
+
+  // TetGen: a comment line and a blank line among the points; point 18 (line 21) has a 7th field
+  std::string node = "27 3 1 1\n", ele = "16 4 1\n";
+  for (int i = 0; i < 27; ++i) {
+    std::string a = std::to_string(i * 0.5);
+    a.erase(a.find_last_not_of('0') + 1);
+    if (a.back() == '.') a.pop_back();
+    node += std::to_string(i + 1) + " " + points[std::size_t(i)] + " " + a + " " + std::to_string(i % 2) +
+            (i == 17 ? " 7" : "") + "\n";
+    if (i == 5) node += "# comment\n";
+    if (i == 6) node += "\n";
+  }
+  for (int i = 0; i < 16; ++i)
+    ele += std::to_string(i + 1) + " " + one_based(i) + " " + std::to_string(i % 3) + "\n";
+  put("fast_bad.ele", ele);
+  EXPECT_ERROR(put("fast_bad.node", node), read_tetgen,
+               {":21: point 18: expected 6 fields (index x y z attributes marker), found 7"});
+
+  // Medit: a comment among the vertices; tetrahedron 13 (line 47) has a bad reference
+  std::string mesh = "MeshVersionFormatted 2\nDimension 3\nVertices\n27\n";
+  for (int i = 0; i < 27; ++i) {
+    mesh += points[std::size_t(i)] + " 0\n";
+    if (i == 5) mesh += "# comment\n";
+  }
+  mesh += "Tetrahedra\n16\n";
+  for (int i = 0; i < 16; ++i) mesh += one_based(i) + (i == 12 ? " 1x" : " 1") + "\n";
+  EXPECT_ERROR(put("fast_bad.mesh", mesh + "End\n"), read_medit,
+               {":47: tetrahedron 13: reference '1x' is not an integer"});
+
+  // legacy VTK ASCII: scalar value 24 (line 94) is not a number
+  std::string vtk = "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 27 double\n";
+  for (const std::string& p : points) vtk += p + "\n";
+  vtk += "CELLS 16 80\n";
+  for (const std::string& t : tets) vtk += "4 " + t + "\n";
+  vtk += "CELL_TYPES 16\n";
+  for (int i = 0; i < 16; ++i) vtk += "10\n";
+  vtk += "POINT_DATA 27\nSCALARS s double 1\nLOOKUP_TABLE default\n";
+  for (int i = 0; i < 27; ++i) vtk += (i == 24 ? std::string("-") : std::to_string(i)) + "\n";
+  EXPECT_ERROR(put("fast_bad.vtk", vtk), read_vtk, {":94: SCALARS value 24: '-' is not a number"});
+
+  // legacy VTK binary: the line breaks inside binary data are not counted (cell type 10 is one)
+  const std::string binary = (tmp / "fast_bad_binary.vtk").string();
+  IO::write_vtk(binary, m, {}, CGAL::parameters::use_binary_mode(true));
+  {
+    std::ofstream out(binary, std::ios::binary | std::ios::app);
+    out << "BOGUS 1\n";
+  }
+  EXPECT_ERROR(binary, read_vtk, {":11: unknown or misplaced keyword 'BOGUS'"});
+}
+
 int main(int argc, char** argv) {
   const prstar_test::Data_folders data(argc, argv);
   tmp = fs::temp_directory_path() / ("prstar_test_io_" + std::to_string(::getpid()));
@@ -720,6 +805,7 @@ int main(int argc, char** argv) {
     test_tet_off();
     test_vtk();
     test_vtu();
+    test_line_numbers_after_fast_paths();
     test_round_trips();
     test_memory_limit();
     test_shared(data);

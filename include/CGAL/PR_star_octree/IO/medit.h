@@ -7,6 +7,7 @@
 #define CGAL_PR_STAR_OCTREE_IO_MEDIT_H
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
@@ -116,6 +117,7 @@ void read_medit_text(std::string_view text, const std::string& name, Mesh& resul
       if (count > max_vertices<Index>())
         r.fail(std::to_string(count) + " vertices do not fit in the index type of the mesh");
       capped_reserve(mesh.points, count, r.remaining_bytes(), 8);
+      advise_huge_pages(mesh.points.data(), mesh.points.capacity() * sizeof(Point_3));
       for (std::size_t i = 0; i < count; ++i) {
         r.set_context("vertex", i + 1);
         const double x = r.expect_double("coordinate");
@@ -131,6 +133,8 @@ void read_medit_text(std::string_view text, const std::string& name, Mesh& resul
       has_tetrahedra = true;
       capped_reserve(mesh.tetrahedra, count, r.remaining_bytes(), 10);
       capped_reserve(mesh.tetrahedron_labels, count, r.remaining_bytes(), 10);
+      advise_huge_pages(mesh.tetrahedra.data(),
+                        mesh.tetrahedra.capacity() * sizeof(typename Mesh::Tetrahedron));
       for (std::size_t i = 0; i < count; ++i) {
         r.set_context("tetrahedron", i + 1);
         std::array<long long, 4> t;
@@ -152,8 +156,9 @@ void read_medit_text(std::string_view text, const std::string& name, Mesh& resul
       }
     } else {
       for (std::size_t i = 0; i < count * entry; ++i) {
-        const std::string_view value = r.expect_token("a value of a skipped section");
         double d;
+        if (r.fast_double(d)) continue;
+        const std::string_view value = r.expect_token("a value of a skipped section");
         if (parse_double(value, d) != nullptr)
           r.fail("section " + section + " (" + std::to_string(count) + " entries of " +
                  std::to_string(entry) + " values): expected a number, found " + quote(value));
@@ -197,8 +202,8 @@ void read_medit(std::istream& in, Mesh& mesh, const std::string& name = "<stream
 /// is then left unchanged; it is replaced on success.
 template <class Mesh>
 void read_medit(const std::string& filename, Mesh& mesh) {
-  const std::string text = internal::load_file(filename);
-  internal::read_medit_text(text, filename, mesh);
+  const internal::File_bytes text(filename); // not zero-filled, huge pages when large
+  internal::read_medit_text(text.view(), filename, mesh);
 }
 
 /// \ingroup PkgPRStarOctreeIO

@@ -7,6 +7,7 @@
 #define CGAL_PR_STAR_OCTREE_IO_TET_OFF_H
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
@@ -70,9 +71,20 @@ void read_tet_off_text(std::string_view text, const std::string& name, Mesh& res
 
   // ---- vertices
   capped_reserve(mesh.points, nv, r.remaining_bytes(), 6);
+  advise_huge_pages(mesh.points.data(), mesh.points.capacity() * sizeof(Point_3));
   std::size_t fields = 0;
   std::vector<double> scalar;
   for (std::size_t i = 0; i < nv; ++i) {
+    if (i > 0) { // fast path: a line of plain numbers like the first one (otherwise read below)
+      Text_reader::Line_cursor c(r);
+      double x, y, z, s = 0;
+      if (c.real(x) && c.real(y) && c.real(z) && (fields == 3 || c.real(s)) && c.end_of_line()) {
+        mesh.points.push_back(Point_3(x, y, z));
+        if (fields == 4) scalar.push_back(s);
+        continue;
+      }
+      r.set_context("vertex", i); // as left by the line before
+    }
     if (!r.next_line(f))
       r.fail("unexpected end of file: " + std::to_string(i) + " vertices read, " + std::to_string(nv) +
              " declared");
@@ -98,8 +110,21 @@ void read_tet_off_text(std::string_view text, const std::string& name, Mesh& res
 
   // ---- tetrahedra
   capped_reserve(mesh.tetrahedra, nt, r.remaining_bytes(), 8);
+  advise_huge_pages(mesh.tetrahedra.data(), mesh.tetrahedra.capacity() * sizeof(typename Mesh::Tetrahedron));
   bool count_column = false;
   for (std::size_t i = 0; i < nt; ++i) {
+    if (i > 0) { // fast path: a line like the first one, 4 distinct indices in range
+      Text_reader::Line_cursor c(r);
+      long long v[4];
+      if ((!count_column || c.word("4")) && c.integer(v[0]) && c.integer(v[1]) && c.integer(v[2]) &&
+          c.integer(v[3]) && v[0] < static_cast<long long>(nv) && v[1] < static_cast<long long>(nv) &&
+          v[2] < static_cast<long long>(nv) && v[3] < static_cast<long long>(nv) && v[0] != v[1] &&
+          v[0] != v[2] && v[0] != v[3] && v[1] != v[2] && v[1] != v[3] && v[2] != v[3] && c.end_of_line()) {
+        mesh.tetrahedra.push_back({Index(v[0]), Index(v[1]), Index(v[2]), Index(v[3])});
+        continue;
+      }
+      r.set_context("tetrahedron", i); // as left by the line before
+    }
     if (!r.next_line(f))
       r.fail("unexpected end of file: " + std::to_string(i) + " tetrahedra read, " + std::to_string(nt) +
              " declared");
@@ -163,8 +188,8 @@ void read_tet_off(std::istream& in, Mesh& mesh, const std::string& name = "<stre
 /// \throws Read_error on any problem; `mesh` is then left unchanged.  It is replaced on success.
 template <class Mesh>
 void read_tet_off(const std::string& filename, Mesh& mesh) {
-  const std::string text = internal::load_file(filename);
-  internal::read_tet_off_text(text, filename, mesh);
+  const internal::File_bytes text(filename); // not zero-filled, huge pages when large
+  internal::read_tet_off_text(text.view(), filename, mesh);
 }
 
 /// \ingroup PkgPRStarOctreeIO

@@ -7,6 +7,7 @@
 #define CGAL_PR_STAR_OCTREE_IO_TETGEN_H
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
@@ -18,6 +19,7 @@
 #include <istream>
 #include <ostream>
 #include <limits>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -76,12 +78,27 @@ void read_tetgen_text(std::string_view node_text, const std::string& node_name, 
     if (static_cast<unsigned long long>(header[0]) > max_vertices<Index>())
       r.fail(std::to_string(n) + " points do not fit in the index type of the mesh");
     capped_reserve(mesh.points, n, r.remaining_bytes(), 2 * fields);
+    advise_huge_pages(mesh.points.data(), mesh.points.capacity() * sizeof(Point_3));
     mesh.point_data.resize(nattr);
     for (std::size_t a = 0; a < nattr; ++a) {
       mesh.point_data[a].name = "attribute_" + std::to_string(a);
       capped_reserve(mesh.point_data[a].values, n, r.remaining_bytes(), 2 * fields);
     }
+    std::vector<double> attributes(nattr);
     for (std::size_t i = 0; i < n; ++i) {
+      if (i > 0) { // fast path: the expected index, plain numbers, the declared number of fields
+        Text_reader::Line_cursor c(r);
+        long long id = 0, marker = 0;
+        double x, y, z;
+        bool ok = c.integer(id) && id == first_number + static_cast<long long>(i) && c.real(x) && c.real(y) &&
+                  c.real(z);
+        for (std::size_t a = 0; ok && a < nattr; ++a) ok = c.real(attributes[a]);
+        if (ok && (header[3] == 0 || c.integer(marker)) && c.end_of_line()) {
+          mesh.points.push_back(Point_3(x, y, z));
+          for (std::size_t a = 0; a < nattr; ++a) mesh.point_data[a].values.push_back(attributes[a]);
+          continue;
+        }
+      }
       if (!r.next_line(f))
         r.fail("unexpected end of file: " + std::to_string(i) + " points read, " + std::to_string(n) +
                " declared");
@@ -144,10 +161,37 @@ void read_tetgen_text(std::string_view node_text, const std::string& node_name, 
     const std::size_t fields = 1 + npt + static_cast<std::size_t>(header[2]);
     const bool labels = header[2] > 0;
     capped_reserve(mesh.tetrahedra, n, r.remaining_bytes(), 2 * fields);
+    advise_huge_pages(mesh.tetrahedra.data(),
+                      mesh.tetrahedra.capacity() * sizeof(typename Mesh::Tetrahedron));
     if (labels) capped_reserve(mesh.tetrahedron_labels, n, r.remaining_bytes(), 2 * fields);
     const long long nv = static_cast<long long>(mesh.points.size());
     long long first_id = 0;
     for (std::size_t i = 0; i < n; ++i) {
+      if (i > 0) { // fast path: the expected index, distinct vertex indices in range, plain numbers
+        Text_reader::Line_cursor c(r);
+        long long id = 0;
+        bool ok = c.integer(id) && id == first_id + static_cast<long long>(i);
+        typename Mesh::Tetrahedron t;
+        for (std::size_t k = 0; ok && k < npt; ++k) {
+          long long v = 0;
+          ok = c.integer(v) && v - first_number >= 0 && v - first_number < nv;
+          if (ok && k < 4) t[k] = static_cast<Index>(v - first_number);
+        }
+        Index twice;
+        ok = ok && !has_repeated_vertex(t, twice);
+        double region = 0;
+        if (ok && labels) {
+          ok = c.real(region) && std::round(region) >= double(std::numeric_limits<int>::min()) &&
+               std::round(region) <= double(std::numeric_limits<int>::max());
+          double a;
+          for (std::size_t k = 1; ok && k < static_cast<std::size_t>(header[2]); ++k) ok = c.real(a);
+        }
+        if (ok && c.end_of_line()) {
+          mesh.tetrahedra.push_back(t);
+          if (labels) mesh.tetrahedron_labels.push_back(static_cast<int>(std::round(region)));
+          continue;
+        }
+      }
       if (!r.next_line(f))
         r.fail("unexpected end of file: " + std::to_string(i) + " tetrahedra read, " + std::to_string(n) +
                " declared");
@@ -243,11 +287,11 @@ void read_tetgen(const std::string& node_or_ele_filename, Mesh& mesh) {
     std::error_code ec;
     if (!std::filesystem::exists(std::filesystem::path(name), ec))
       throw Read_error(name, 0, "no such file (a TetGen mesh needs both its .node and its .ele file)");
-    return internal::load_file(name);
+    return std::make_unique<internal::File_bytes>(name); // not zero-filled, huge pages when large
   };
-  const std::string node_text = load(names.first);
-  const std::string ele_text = load(names.second);
-  internal::read_tetgen_text(node_text, names.first, ele_text, names.second, mesh);
+  const auto node_text = load(names.first);
+  const auto ele_text = load(names.second);
+  internal::read_tetgen_text(node_text->view(), names.first, ele_text->view(), names.second, mesh);
 }
 
 /// \ingroup PkgPRStarOctreeIO
@@ -255,7 +299,8 @@ void read_tetgen(const std::string& node_or_ele_filename, Mesh& mesh) {
 /// `write_tetgen(const std::string&, const Mesh&)`.
 template <class Mesh>
 void write_tetgen(std::ostream& node, std::ostream& ele, const Mesh& mesh,
-                  const std::string& node_name = "<node stream>", const std::string& ele_name = "<ele stream>") {
+                  const std::string& node_name = "<node stream>",
+                  const std::string& ele_name = "<ele stream>") {
   internal::check_mesh_for_writing(mesh, node_name);
   std::string buf;
   const std::size_t na = mesh.point_data.size();

@@ -223,7 +223,10 @@ private:
   // ---- errors: FILE:LINE for text files, FILE: byte N for binary ones
   [[noreturn]] void fail(const std::string& message) const {
     if (binary_) throw Read_error(name_, 0, "byte " + std::to_string(pos_) + ": " + message);
-    throw Read_error(name_, line_, message);
+    // the line is counted only now: reading does not count line breaks
+    const std::size_t at = std::min(pos_, d_.size());
+    throw Read_error(name_, 1 + static_cast<std::size_t>(std::count(d_.begin(), d_.begin() + at, '\n')),
+                     message);
   }
   [[noreturn]] void fail_eof(const char* what) const {
     fail(std::string("unexpected end of file, expected ") + what);
@@ -234,18 +237,11 @@ private:
     return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
   }
 
-  /// Skips white space (counting lines); false at the end of the data.
+  /// Skips white space; false at the end of the data.
   bool skip_space() {
     const std::size_t n = d_.size();
-    while (pos_ < n) {
-      const char c = d_[pos_];
-      if (c == '\n')
-        ++line_;
-      else if (!space(c))
-        return true;
-      ++pos_;
-    }
-    return false;
+    while (pos_ < n && space(d_[pos_])) ++pos_;
+    return pos_ < n;
   }
   std::string_view token(const char* what) {
     if (!skip_space()) fail_eof(what);
@@ -254,8 +250,14 @@ private:
     return d_.substr(b, pos_ - b);
   }
   long long integer(const char* what) {
-    const std::string_view t = token(what);
     long long v;
+    if (skip_space()) { // fast path: plain digits
+      if (const char* e = scan_plain_integer(d_.data() + pos_, d_.data() + d_.size(), v, 0)) {
+        pos_ = static_cast<std::size_t>(e - d_.data());
+        return v;
+      }
+    }
+    const std::string_view t = token(what);
     if (const char* why = parse_integer(t, v)) fail(std::string(what) + " " + quote(t) + " " + why);
     return v;
   }
@@ -273,8 +275,14 @@ private:
     return static_cast<int>(v);
   }
   double real(const char* what) {
-    const std::string_view t = token(what);
     double v;
+    if (skip_space()) { // fast path: a plain finite number
+      if (const char* e = scan_plain_double(d_.data() + pos_, d_.data() + d_.size(), v, 0)) {
+        pos_ = static_cast<std::size_t>(e - d_.data());
+        return v;
+      }
+    }
+    const std::string_view t = token(what);
     if (const char* why = parse_double(t, v)) fail(std::string(what) + " " + quote(t) + " " + why);
     return v;
   }
@@ -285,14 +293,12 @@ private:
     if (d_[pos_] != '\n')
       fail(std::string("unexpected data after ") + after + ": " + quote(d_.substr(pos_, 20)));
     ++pos_;
-    ++line_;
   }
   /// Moves past the next line break.
   void skip_line(const char* what) {
     const std::size_t eol = d_.find('\n', pos_);
     if (eol == std::string_view::npos) fail_eof(what);
     pos_ = eol + 1;
-    ++line_;
   }
 
   // ---- binary
@@ -338,7 +344,6 @@ private:
       at = d_.find(end, at + 1);
     if (at == std::string_view::npos)
       fail("unexpected end of file: no " + end.substr(1) + " for " + std::string(section));
-    line_ += static_cast<std::size_t>(std::count(d_.begin() + pos_, d_.begin() + at, '\n')) + 1;
     pos_ = at + end.size();
   }
 
@@ -765,7 +770,6 @@ private:
   std::string_view d_;
   std::string name_;
   std::size_t pos_ = 0;
-  std::size_t line_ = 1;
   int version_ = 0;
   bool binary_ = false;
   bool swap_ = false;

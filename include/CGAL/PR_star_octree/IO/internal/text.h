@@ -77,8 +77,9 @@ inline std::string load_stream(std::istream& in, const std::string& name) {
 // Strings and numbers
 // ---------------------------------------------------------------------------------------------
 
+/// Whether `c` is one of the six ASCII blanks: space, `\t`, `\n`, `\v`, `\f`, `\r` (9 to 13).
 inline bool is_space(char c) {
-  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+  return c == ' ' || static_cast<unsigned char>(c - '\t') < 5;
 }
 
 inline char to_lower(char c) {
@@ -171,6 +172,42 @@ inline const char* parse_integer(std::string_view token, long long& value) {
   return nullptr;
 }
 
+// Fast paths of `parse_double()` and `parse_integer()`, for a token starting at `p` in a text
+// ending at `end`: they accept only the common spellings, give the same values, and return the end
+// of the token, or `nullptr` for anything else (the caller then extracts the token and calls
+// `parse_double()` or `parse_integer()`, which give the value or the message).  A token ends at a
+// blank, at `comment` (when not 0) or at the end of the text.
+
+inline bool ends_token(const char* p, const char* end, char comment) {
+  return p == end || is_space(*p) || (comment != 0 && *p == comment);
+}
+
+/// Plain decimal digits (at most 18: no overflow), then the end of the token.
+inline const char* scan_plain_integer(const char* p, const char* end, long long& value, char comment) {
+  const char* const first = p;
+  unsigned long long v = 0;
+  while (p != end && static_cast<unsigned char>(*p - '0') < 10 && p - first < 19) {
+    v = v * 10 + static_cast<unsigned char>(*p - '0');
+    ++p;
+  }
+  if (p == first || p - first > 18 || !ends_token(p, end, comment)) return nullptr;
+  value = static_cast<long long>(v);
+  return p;
+}
+
+/// A finite number in `std::from_chars`'s general format starting with a digit, `-` or `.`, then
+/// the end of the token.
+inline const char* scan_plain_double(const char* p, const char* end, double& value, char comment) {
+  if (p == end) return nullptr;
+  const char c = *p;
+  if (static_cast<unsigned char>(c - '0') >= 10 && c != '-' && c != '.') return nullptr;
+  double v;
+  const std::from_chars_result r = std::from_chars(p, end, v, std::chars_format::general);
+  if (r.ec != std::errc() || !ends_token(r.ptr, end, comment) || !std::isfinite(v)) return nullptr;
+  value = v;
+  return r.ptr;
+}
+
 /// Reserves at most `count` elements, and no more than the remaining input can possibly hold
 /// (`available_bytes / min_bytes_per_element`): a header cannot make us allocate more than the
 /// file justifies.
@@ -202,14 +239,16 @@ unsigned long long max_vertices() {
 /// Reads a text held in memory either line by line (`next_line()`: tokens of the next line that
 /// is not blank once its comment is removed) or token by token across lines (`next_token()`).
 /// Comments run from `comment` to the end of the line (no comment when `comment == 0`).  Every
-/// returned line or token sets `line()`, used by `fail()` for the error message.
+/// returned line or token sets `line()`, used by `fail()` for the error message.  Line numbers are
+/// not counted while reading: `line()` counts the line breaks before the last returned item when
+/// it is asked for (an error), so reading costs nothing for them.
 class Text_reader {
 public:
   Text_reader(std::string_view text, std::string name, char comment = '#')
       : text_(text), name_(std::move(name)), comment_(comment) {}
 
   const std::string& name() const { return name_; }
-  std::size_t line() const { return line_; }
+  std::size_t line() const { return item_line_ != computed ? item_line_ : line_at(item_pos_); }
   std::size_t remaining_bytes() const { return text_.size() - pos_; }
   bool at_end() const { return pos_ >= text_.size(); }
 
@@ -222,7 +261,7 @@ public:
   void clear_context() { context_kind_ = nullptr; }
 
   [[noreturn]] void fail(const std::string& message) const {
-    throw Read_error(name_, line_, prefix() + message);
+    throw Read_error(name_, line(), prefix() + message);
   }
   [[noreturn]] void fail_at(std::size_t line, const std::string& message) const {
     throw Read_error(name_, line, prefix() + message);
@@ -232,15 +271,17 @@ public:
     return std::string(context_kind_) + " " + std::to_string(context_number_) + ": ";
   }
 
-  /// A position in the text, to come back to with `restore()` (look-ahead).
+  /// A position in the text, to come back to with `restore()` (look-ahead).  `pos` may be moved
+  /// forward over binary data before `restore()`: the line breaks in between are then not counted.
   struct Mark {
     std::size_t pos, current_line, line;
   };
-  Mark mark() const { return Mark{pos_, current_line_, line_}; }
+  Mark mark() const { return Mark{pos_, line_at(pos_), line()}; }
   void restore(const Mark& m) {
     pos_ = m.pos;
-    current_line_ = m.current_line;
-    line_ = m.line;
+    base_pos_ = m.pos;
+    base_line_ = m.current_line;
+    item_line_ = m.line;
   }
 
   /// The next token without consuming it (empty at the end).
@@ -259,9 +300,8 @@ public:
     const std::size_t end = (eol == std::string_view::npos) ? text_.size() : eol;
     line = text_.substr(pos_, end - pos_);
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    line_ = current_line_;
+    set_item(pos_);
     pos_ = (eol == std::string_view::npos) ? text_.size() : eol + 1;
-    if (eol != std::string_view::npos) ++current_line_;
     return true;
   }
 
@@ -282,26 +322,24 @@ public:
 
   /// The next token, across lines; `false` at the end.
   bool next_token(std::string_view& token) {
+    const std::size_t n = text_.size();
     for (;;) {
-      while (pos_ < text_.size() && is_space(text_[pos_])) {
-        if (text_[pos_] == '\n') ++current_line_;
-        ++pos_;
-      }
-      if (pos_ >= text_.size()) {
-        line_ = current_line_;
+      while (pos_ < n && is_space(text_[pos_])) ++pos_;
+      if (pos_ >= n) {
+        set_item(pos_);
         return false;
       }
       if (comment_ != 0 && text_[pos_] == comment_) {
         const std::size_t eol = text_.find('\n', pos_);
-        pos_ = (eol == std::string_view::npos) ? text_.size() : eol;
+        pos_ = (eol == std::string_view::npos) ? n : eol;
         continue;
       }
       break;
     }
     const std::size_t begin = pos_;
-    while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != comment_) ++pos_;
+    while (pos_ < n && !is_space(text_[pos_]) && text_[pos_] != comment_) ++pos_;
     token = text_.substr(begin, pos_ - begin);
-    line_ = current_line_;
+    set_item(begin);
     return true;
   }
 
@@ -313,15 +351,17 @@ public:
   }
 
   double expect_double(const char* what) {
-    const std::string_view token = expect_token(what);
     double v = 0;
+    if (fast_double(v)) return v;
+    const std::string_view token = expect_token(what);
     if (const char* why = parse_double(token, v)) fail(std::string(what) + " " + quote(token) + " " + why);
     return v;
   }
 
   long long expect_integer(const char* what) {
-    const std::string_view token = expect_token(what);
     long long v = 0;
+    if (fast_integer(v)) return v;
+    const std::string_view token = expect_token(what);
     if (const char* why = parse_integer(token, v)) fail(std::string(what) + " " + quote(token) + " " + why);
     return v;
   }
@@ -335,6 +375,84 @@ public:
     return static_cast<std::size_t>(v);
   }
 
+  /// The fast path of `expect_double()`: the next token when it is a plain finite number
+  /// (`scan_plain_double()`), consumed; otherwise `false`, and the token is left to
+  /// `expect_double()` (only blanks are consumed).
+  bool fast_double(double& v) {
+    const char* p = skip_blanks();
+    if (p == nullptr) return false;
+    const char* e = scan_plain_double(p, end(), v, comment_);
+    if (e == nullptr) return false;
+    take(p, e);
+    return true;
+  }
+  /// The fast path of `expect_integer()` for plain decimal digits (`scan_plain_integer()`).
+  bool fast_integer(long long& v) {
+    const char* p = skip_blanks();
+    if (p == nullptr) return false;
+    const char* e = scan_plain_integer(p, end(), v, comment_);
+    if (e == nullptr) return false;
+    take(p, e);
+    return true;
+  }
+
+  /// Fast path of the line-oriented readers: a cursor on the line at the current position, which
+  /// reads its fields (`real()`, `integer()`) and its end (`end_of_line()`).  Any field that is not
+  /// a plain number, a blank or comment line, a missing or an extra field make the cursor fail;
+  /// nothing is then consumed, and the reader reads the same line with `next_line()` (which skips
+  /// blank lines and gives the messages).  On success (`accept()`) the line is consumed and
+  /// `line()` is its line.
+  class Line_cursor {
+  public:
+    explicit Line_cursor(Text_reader& r)
+        : r_(r), p_(r.text_.data() + r.pos_), end_(r.text_.data() + r.text_.size()) {}
+    bool real(double& v) {
+      if (!field()) return false;
+      const char* e = scan_plain_double(p_, end_, v, r_.comment_);
+      if (e == nullptr) return false;
+      p_ = e;
+      return true;
+    }
+    bool integer(long long& v) {
+      if (!field()) return false;
+      const char* e = scan_plain_integer(p_, end_, v, r_.comment_);
+      if (e == nullptr) return false;
+      p_ = e;
+      return true;
+    }
+    /// Whether the next field is exactly `word`.
+    bool word(std::string_view w) {
+      if (!field() || static_cast<std::size_t>(end_ - p_) < w.size() || std::string_view(p_, w.size()) != w ||
+          !ends_token(p_ + w.size(), end_, r_.comment_))
+        return false;
+      p_ += w.size();
+      return true;
+    }
+    /// Whether only blanks, or a comment, follow on the line; then consumes the line.
+    bool end_of_line() {
+      while (p_ != end_ && *p_ != '\n' && is_space(*p_)) ++p_;
+      if (p_ != end_ && *p_ != '\n') {
+        if (r_.comment_ == 0 || *p_ != r_.comment_) return false;
+        const void* eol = std::memchr(p_, '\n', static_cast<std::size_t>(end_ - p_));
+        p_ = eol == nullptr ? end_ : static_cast<const char*>(eol);
+      }
+      const std::size_t begin = r_.pos_;
+      r_.pos_ = static_cast<std::size_t>(p_ - r_.text_.data()) + (p_ != end_ ? 1 : 0);
+      r_.set_item(begin);
+      return true;
+    }
+
+  private:
+    // skips the blanks before a field; false at the end of the line or at a comment
+    bool field() {
+      while (p_ != end_ && *p_ != '\n' && is_space(*p_)) ++p_;
+      return p_ != end_ && *p_ != '\n' && (r_.comment_ == 0 || *p_ != r_.comment_);
+    }
+    Text_reader& r_;
+    const char* p_;
+    const char* end_;
+  };
+
   static void split(std::string_view line, std::vector<std::string_view>& tokens) {
     tokens.clear();
     std::size_t i = 0;
@@ -347,12 +465,42 @@ public:
   }
 
 private:
+  const char* end() const { return text_.data() + text_.size(); }
+  // skips blanks; the start of the next token, or nullptr at the end of the text or at a comment
+  const char* skip_blanks() {
+    const std::size_t n = text_.size();
+    while (pos_ < n && is_space(text_[pos_])) ++pos_;
+    if (pos_ >= n || (comment_ != 0 && text_[pos_] == comment_)) return nullptr;
+    return text_.data() + pos_;
+  }
+  void take(const char* b, const char* e) {
+    set_item(static_cast<std::size_t>(b - text_.data()));
+    pos_ = static_cast<std::size_t>(e - text_.data());
+  }
+  void set_item(std::size_t pos) {
+    item_pos_ = pos;
+    item_line_ = computed;
+  }
+  // the line of position `pos`: the line breaks before it are counted from the last position
+  // asked for (forward or backward), or from the last `restore()`
+  std::size_t line_at(std::size_t pos) const {
+    const char* t = text_.data();
+    if (pos >= base_pos_)
+      base_line_ += static_cast<std::size_t>(std::count(t + base_pos_, t + pos, '\n'));
+    else
+      base_line_ -= static_cast<std::size_t>(std::count(t + pos, t + base_pos_, '\n'));
+    base_pos_ = pos;
+    return base_line_;
+  }
+
   std::string_view text_;
   std::string name_;
   char comment_;
   std::size_t pos_ = 0;
-  std::size_t current_line_ = 1; // line of pos_
-  std::size_t line_ = 0;         // line of the last returned token or line
+  static constexpr std::size_t computed = std::size_t(-1);
+  std::size_t item_pos_ = 0;  // where the last returned token or line starts
+  std::size_t item_line_ = 0; // its line, or `computed` from `item_pos_` (0 before the first item)
+  mutable std::size_t base_pos_ = 0, base_line_ = 1; // a position and its line
   const char* context_kind_ = nullptr;
   std::size_t context_number_ = 0;
 };

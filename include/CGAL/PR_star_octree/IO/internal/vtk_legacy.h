@@ -115,10 +115,17 @@ public:
       binary_values(count, type, out, nullptr, what);
       return;
     }
-    if (out) capped_reserve(*out, count, r.remaining_bytes(), 2);
+    if (out) {
+      capped_reserve(*out, count, r.remaining_bytes(), 2);
+      advise_huge_pages(out->data(), out->capacity() * sizeof(double));
+    }
     for (std::size_t i = 0; i < count; ++i) {
-      const std::string_view tok = r.expect_token(what);
       double v;
+      if (r.fast_double(v)) {
+        if (out) out->push_back(v);
+        continue;
+      }
+      const std::string_view tok = r.expect_token(what);
       const char* why = parse_double(tok, v);
       if (why != nullptr && (out != nullptr || std::string_view(why).substr(0, 13) != "is not finite"))
         r.fail(std::string(what) + " value " + std::to_string(i) + ": " + quote(tok) + " " + why);
@@ -132,6 +139,7 @@ public:
       return;
     }
     capped_reserve(out, count, r.remaining_bytes(), 2);
+    advise_huge_pages(out.data(), out.capacity() * sizeof(long long));
     for (std::size_t i = 0; i < count; ++i) out.push_back(r.expect_integer(what));
   }
 
@@ -251,6 +259,11 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
 
   bool has_dataset = false, has_points = false, has_cells = false, has_types = false;
   std::vector<long long> starts, connectivity, types;
+  // ASCII CELLS records: while every cell has 4 vertices the starts are implicit (4 i, `starts`
+  // stays empty), and while every vertex index fits they are kept on 4 bytes in `compact` (the
+  // arrays of a large tetrahedral mesh); both fall back to `starts` and `connectivity` otherwise
+  bool implicit_starts = false, compact_cells = false;
+  std::vector<std::uint32_t> compact;
   std::vector<double> coordinates;
   std::vector<Point_data_array> cell_arrays; // one-component cell data, labels among them
   std::size_t nv = 0, nc = 0;
@@ -337,9 +350,9 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
           r.fail("the cells use " + std::to_string(at) + " values, CELLS declares " + std::to_string(b));
       } else { // CELLS <#cells> <size>, then records "k i_1 ... i_k"
         nc = a;
-        capped_reserve(starts, nc + 1, r.remaining_bytes(), 4);
-        capped_reserve(connectivity, b, r.remaining_bytes(), 2);
-        starts.push_back(0);
+        implicit_starts = compact_cells = true;
+        capped_reserve(compact, b, r.remaining_bytes(), 2);
+        advise_huge_pages(compact.data(), compact.capacity() * sizeof(std::uint32_t));
         std::size_t used = 0;
         for (std::size_t i = 0; i < nc; ++i) {
           r.set_context("cell", i);
@@ -349,8 +362,27 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
           if (used > b)
             r.fail("the cells use more than the " + std::to_string(b) + " values declared by CELLS " +
                    std::to_string(nc) + " " + std::to_string(b));
-          for (long long j = 0; j < k; ++j) connectivity.push_back(r.expect_integer("vertex index"));
-          starts.push_back(static_cast<long long>(connectivity.size()));
+          if (implicit_starts && k != 4) { // explicit starts from now on
+            implicit_starts = false;
+            capped_reserve(starts, nc + 1, r.remaining_bytes(), 4);
+            for (std::size_t c = 0; c <= i; ++c) starts.push_back(4 * static_cast<long long>(c));
+          }
+          for (long long j = 0; j < k; ++j) {
+            const long long v = r.expect_integer("vertex index");
+            if (compact_cells && v >= 0 && v <= 0xffffffffLL) {
+              compact.push_back(static_cast<std::uint32_t>(v));
+              continue;
+            }
+            if (compact_cells) { // 8-byte indices from now on
+              compact_cells = false;
+              capped_reserve(connectivity, b, r.remaining_bytes() + 2 * compact.size(), 2);
+              connectivity.assign(compact.begin(), compact.end());
+              std::vector<std::uint32_t>().swap(compact);
+            }
+            connectivity.push_back(v);
+          }
+          if (!implicit_starts)
+            starts.push_back(static_cast<long long>(compact_cells ? compact.size() : connectivity.size()));
         }
         r.clear_context();
         if (used != b)
@@ -463,8 +495,32 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
     mesh.points.push_back(Point_3(coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]));
   mesh.tetrahedra.reserve(nc);
   std::vector<char> kept;
-  vtk_cells_to_tetrahedra(starts, connectivity, types, nv, 0, mesh.tetrahedra, kept, mesh.skipped_cells,
-                          [&](const std::string& m) { throw Read_error(name, 0, m); });
+  const auto cell_fail = [&](const std::string& m) { throw Read_error(name, 0, m); };
+  if (implicit_starts || compact_cells) {
+    // the checks of vtk_cells_to_tetrahedra(): the starts begin at 0 and end at the size of the
+    // connectivity by construction
+    if (types.size() != nc)
+      cell_fail(std::to_string(types.size()) + " cell types for " + std::to_string(nc) + " cells");
+    if (nc > 0) {
+      Vtk_tetrahedra_builder<typename Mesh::Tetrahedron, long long> builder(
+          implicit_starts ? nullptr : starts.data() + 1, types.data(), nc, nv, 0, mesh.tetrahedra, kept,
+          mesh.skipped_cells, cell_fail);
+      if (compact_cells) { // 4-byte indices handed over in chunks of 8-byte ones
+        long long chunk[4096];
+        for (std::size_t at = 0; at < compact.size(); at += 4096) {
+          const std::size_t n = std::min<std::size_t>(4096, compact.size() - at);
+          for (std::size_t j = 0; j < n; ++j) chunk[j] = compact[at + j];
+          builder(chunk, n);
+        }
+      } else {
+        builder(connectivity.data(), connectivity.size());
+      }
+      builder.finish();
+    }
+  } else {
+    vtk_cells_to_tetrahedra(starts, connectivity, types, nv, 0, mesh.tetrahedra, kept, mesh.skipped_cells,
+                            cell_fail);
+  }
   bool has_labels = false;
   for (Point_data_array& a : cell_arrays) {
     vtk_keep_cells(a.values, kept);

@@ -268,12 +268,30 @@ private:
   template <class T>
   void read_ascii(const Xml_element& e, std::size_t count, std::vector<T>& out) const {
     capped_reserve(out, count, doc_.text().size(), 2);
+    advise_huge_pages(out.data(), out.capacity() * sizeof(T));
+    const char* const text = doc_.text().data();
     for (const auto& part : e.text_parts) {
       std::size_t p = part.first;
       while (p < part.second) {
-        while (p < part.second && is_space(doc_.text()[p])) ++p;
+        while (p < part.second && is_space(text[p])) ++p;
+        if (p < part.second && out.size() < count) { // fast path: a plain number
+          T v{};
+          const char* end = nullptr;
+          if constexpr (std::is_integral<T>::value) {
+            long long x = 0;
+            end = scan_plain_integer(text + p, text + part.second, x, 0);
+            v = static_cast<T>(x);
+          } else {
+            end = scan_plain_double(text + p, text + part.second, v, 0);
+          }
+          if (end != nullptr) {
+            out.push_back(v);
+            p = static_cast<std::size_t>(end - text);
+            continue;
+          }
+        }
         const std::size_t b = p;
-        while (p < part.second && !is_space(doc_.text()[p])) ++p;
+        while (p < part.second && !is_space(text[p])) ++p;
         if (p == b) break;
         const std::string_view tok = doc_.text().substr(b, p - b);
         if (out.size() == count)
