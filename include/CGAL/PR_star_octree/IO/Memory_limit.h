@@ -127,6 +127,17 @@ inline void check_memory(const std::string& file, std::size_t line, std::uint64_
                            needed, limit);
 }
 
+/// `check_memory()`, but only when the rest of the file (`available_bytes`) can hold the
+/// `announced` entries at `min_bytes` each at least: otherwise the file is truncated or its count
+/// wrong, which the parser reports itself.
+inline void check_memory_if_present(const std::string& file, std::size_t line, std::uint64_t vertices,
+                                    std::uint64_t tetrahedra, std::size_t point_bytes,
+                                    std::size_t tetrahedron_bytes, std::uint64_t announced,
+                                    std::size_t min_bytes, std::size_t available_bytes) {
+  if (min_bytes != 0 && announced > available_bytes / min_bytes) return;
+  check_memory(file, line, vertices, tetrahedra, point_bytes, tetrahedron_bytes);
+}
+
 } // namespace internal
 } // namespace IO
 } // namespace PR_star_octree

@@ -6,6 +6,7 @@
 #ifndef CGAL_PR_STAR_OCTREE_IO_MEDIT_H
 #define CGAL_PR_STAR_OCTREE_IO_MEDIT_H
 
+#include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
@@ -116,6 +117,9 @@ void read_medit_text(std::string_view text, const std::string& name, Mesh& resul
       has_vertices = true;
       if (count > max_vertices<Index>())
         r.fail(std::to_string(count) + " vertices do not fit in the index type of the mesh");
+      check_memory_if_present(r.name(), r.line(), count, mesh.tetrahedra.size(), sizeof(Point_3),
+                              sizeof(typename Mesh::Tetrahedron) + sizeof(int), count, 8,
+                              r.remaining_bytes());
       capped_reserve(mesh.points, count, r.remaining_bytes(), 8);
       advise_huge_pages(mesh.points.data(), mesh.points.capacity() * sizeof(Point_3));
       for (std::size_t i = 0; i < count; ++i) {
@@ -131,6 +135,9 @@ void read_medit_text(std::string_view text, const std::string& name, Mesh& resul
     } else if (keyword == "tetrahedra") {
       if (has_tetrahedra) r.fail("duplicate 'Tetrahedra' section");
       has_tetrahedra = true;
+      check_memory_if_present(r.name(), r.line(), mesh.points.size(), count, sizeof(Point_3),
+                              sizeof(typename Mesh::Tetrahedron) + sizeof(int), count, 10,
+                              r.remaining_bytes());
       capped_reserve(mesh.tetrahedra, count, r.remaining_bytes(), 10);
       capped_reserve(mesh.tetrahedron_labels, count, r.remaining_bytes(), 10);
       advise_huge_pages(mesh.tetrahedra.data(),

@@ -6,6 +6,7 @@
 #ifndef CGAL_PR_STAR_OCTREE_IO_TET_OFF_H
 #define CGAL_PR_STAR_OCTREE_IO_TET_OFF_H
 
+#include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
@@ -70,6 +71,8 @@ void read_tet_off_text(std::string_view text, const std::string& name, Mesh& res
   const std::size_t nt = static_cast<std::size_t>(counts[1]);
 
   // ---- vertices
+  check_memory_if_present(r.name(), r.line(), nv, nt, sizeof(Point_3), sizeof(typename Mesh::Tetrahedron),
+                          nv + nt, 6, r.remaining_bytes());
   capped_reserve(mesh.points, nv, r.remaining_bytes(), 6);
   advise_huge_pages(mesh.points.data(), mesh.points.capacity() * sizeof(Point_3));
   std::size_t fields = 0;

@@ -6,6 +6,7 @@
 #ifndef CGAL_PR_STAR_OCTREE_IO_TETGEN_H
 #define CGAL_PR_STAR_OCTREE_IO_TETGEN_H
 
+#include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
@@ -77,6 +78,9 @@ void read_tetgen_text(std::string_view node_text, const std::string& node_name, 
     const std::size_t fields = 4 + nattr + static_cast<std::size_t>(header[3]);
     if (static_cast<unsigned long long>(header[0]) > max_vertices<Index>())
       r.fail(std::to_string(n) + " points do not fit in the index type of the mesh");
+    check_memory_if_present(r.name(), r.line(), n, mesh.tetrahedra.size(), sizeof(Point_3) + 8 * nattr,
+                            sizeof(typename Mesh::Tetrahedron) + sizeof(int), n, 2 * fields,
+                            r.remaining_bytes());
     capped_reserve(mesh.points, n, r.remaining_bytes(), 2 * fields);
     advise_huge_pages(mesh.points.data(), mesh.points.capacity() * sizeof(Point_3));
     mesh.point_data.resize(nattr);
@@ -160,6 +164,9 @@ void read_tetgen_text(std::string_view node_text, const std::string& node_name, 
     const std::size_t npt = static_cast<std::size_t>(header[1]);
     const std::size_t fields = 1 + npt + static_cast<std::size_t>(header[2]);
     const bool labels = header[2] > 0;
+    check_memory_if_present(r.name(), r.line(), mesh.points.size(), n, sizeof(Point_3),
+                            sizeof(typename Mesh::Tetrahedron) + sizeof(int), n, 2 * fields,
+                            r.remaining_bytes());
     capped_reserve(mesh.tetrahedra, n, r.remaining_bytes(), 2 * fields);
     advise_huge_pages(mesh.tetrahedra.data(),
                       mesh.tetrahedra.capacity() * sizeof(typename Mesh::Tetrahedron));

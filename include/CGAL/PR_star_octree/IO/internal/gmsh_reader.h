@@ -10,6 +10,7 @@
 // `CGAL/PR_star_octree/IO/gmsh.h`.  The file is held in memory; one cursor reads its text parts
 // (tokens, with line numbers) and its binary parts (fixed-size values, with byte offsets).
 
+#include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
@@ -473,6 +474,9 @@ private:
       check_node_count(total);
     }
     const std::size_t left = d_.size() - pos_;
+    check_memory_if_present(name_, 0, total, 0, sizeof(typename Mesh::Point_3) + 8,
+                            sizeof(typename Mesh::Tetrahedron) + sizeof(int), total,
+                            binary_ ? size_bytes_ + 24 : 8, left);
     capped_reserve(mesh_.points, static_cast<std::size_t>(std::min<std::uint64_t>(total, left)), left,
                    binary_ ? size_bytes_ + 24 : 8);
     capped_reserve(tags_, static_cast<std::size_t>(std::min<std::uint64_t>(total, left)), left,
@@ -541,6 +545,8 @@ private:
       need_items(n, 28, "nodes");
     }
     const std::size_t left = d_.size() - pos_;
+    check_memory_if_present(name_, 0, n, 0, sizeof(typename Mesh::Point_3) + 8,
+                            sizeof(typename Mesh::Tetrahedron) + sizeof(int), n, binary_ ? 28 : 8, left);
     const std::size_t cap = static_cast<std::size_t>(std::min<std::uint64_t>(n, left));
     capped_reserve(mesh_.points, cap, left, binary_ ? 28 : 8);
     capped_reserve(tags_, cap, left, binary_ ? 28 : 8);
@@ -594,6 +600,8 @@ private:
   /// `min_bytes` bytes per tetrahedron.
   void reserve_tetrahedra(std::uint64_t n, std::size_t min_bytes) {
     const std::size_t left = d_.size() - pos_;
+    check_memory_if_present(name_, 0, mesh_.points.size(), n, sizeof(typename Mesh::Point_3) + 8,
+                            sizeof(typename Mesh::Tetrahedron) + sizeof(int), n, min_bytes, left);
     const std::size_t k = static_cast<std::size_t>(std::min<std::uint64_t>(n, left / min_bytes + 1));
     mesh_.tetrahedra.reserve(k);
     mesh_.tetrahedron_labels.reserve(k);
