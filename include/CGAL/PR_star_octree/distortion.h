@@ -204,44 +204,57 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
   using Octree = PR_star_octree_3<GT, I>;
   constexpr bool parallel = internal::is_parallel<ConcurrencyTag>();
   struct State {
-    Vertex_classifier<Octree> classifier;
-    std::vector<double> s3, s4;
+    internal::Leaf_links<I> links;
+    std::vector<double> s3, s4, fields;
+    std::vector<std::array<double, 3>> points;
   };
   Vertex_type_counts counts;
   // In parallel, the leaves write their own slots of `result` (octree numbering), copied to the
   // user's map afterwards; sequentially, each leaf writes to the map directly.
   std::vector<Vertex_curvature> result(parallel ? tree.number_of_vertices() : 0);
   internal::process_leaves<ConcurrencyTag>(
-      tree, VERTEX_TETRAHEDRA, State(),
+      tree, 0u, State(), // the leaf's tetrahedra only: the links are gathered here
       [&](State& state, const Leaf_topology<Octree>& local, std::size_t) {
-        // Each tetrahedron of the leaf once: its coordinates and field values are read once for
-        // all its corners in the leaf.  The leaf's list is in increasing order, as every star, so
-        // each vertex sums its corners in the same order as `vertex_curvature()`.
         const I vb = local.vertex_begin();
         const std::size_t nv = local.vertex_end() - vb;
+        const auto tets = local.tetrahedra();
+        // The links (checked, as `Vertex_classifier` does by default) and the leaf's tetrahedra in
+        // local ids: the coordinates and the field value of each vertex are read once per leaf.
+        state.links.build(tree.tetrahedra().data(), tets.shared(), tets.owned(), vb, nv,
+                          /* check links */ true, /* keep the tetrahedra */ true);
+        const std::size_t m = state.links.number_of_ids();
+        state.points.resize(m);
+        state.fields.resize(m);
+        for (std::size_t j = 0; j < m; ++j) {
+          const I v = state.links.vertex(j);
+          state.points[j] = tree.coordinates(tree.point(v));
+          state.fields[j] = internal::field_value(tree, field, v);
+        }
+        // Each tetrahedron of the leaf once, for all its corners in the leaf.  The leaf's list is
+        // in increasing order, as every star, so each vertex sums its corners in the same order as
+        // `vertex_curvature()`.
         std::vector<double>&s3 = state.s3, &s4 = state.s4;
         s3.assign(nv, 0.);
         s4.assign(nv, 0.);
         std::array<std::array<double, 3>, 4> p;
         std::array<double, 4> f;
-        for (I t : local.tetrahedra()) {
-          const auto& c = tree.tetrahedron(t);
+        for (std::size_t t = 0; t < tets.size(); ++t) {
+          const auto& l = state.links.tetrahedron(t);
           for (int i = 0; i < 4; ++i) {
-            p[i] = tree.coordinates(tree.point(c[i]));
-            f[i] = internal::field_value(tree, field, c[i]);
+            p[i] = state.points[l[i]];
+            f[i] = state.fields[l[i]];
           }
           for (int k = 0; k < 4; ++k) {
-            const std::size_t i = static_cast<I>(c[k] - vb);
-            if (i >= nv) continue;
+            if (l[k] >= nv) continue;
             const auto a = internal::corner_solid_angles(p, f, k);
-            s3[i] += a.first;
-            s4[i] += a.second;
+            s3[l[k]] += a.first;
+            s4[l[k]] += a.second;
           }
         }
         for (std::size_t i = 0; i < nv; ++i) {
           const I v = static_cast<I>(vb + i);
           const Vertex_curvature c =
-              internal::finish_curvature(s3[i], s4[i], state.classifier.classify(local, v));
+              internal::finish_curvature(s3[i], s4[i], static_cast<Vertex_type>(state.links.kind(i)));
           if constexpr (parallel)
             result[v] = c;
           else {
