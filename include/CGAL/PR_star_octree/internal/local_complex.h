@@ -330,32 +330,34 @@ public:
   void reset(std::size_t n) {
     std::size_t size = 16;
     while (size < 2 * n) size *= 2;
-    if (keys_.size() < size) {
-      keys_.assign(size, Key());
-      values_.assign(size, 0);
-      stamps_.assign(size, 0);
+    if (slots_.size() < size) {
+      slots_.assign(size, Slot());
       generation_ = 0;
     }
     mask_ = size - 1;
     if (++generation_ == 0) {
-      std::fill(stamps_.begin(), stamps_.end(), 0);
+      for (Slot& s : slots_) s.stamp = 0;
       generation_ = 1;
     }
   }
   // the id of `key`; a new key gets `next`, which is then incremented
   std::uint32_t find_or_insert(const Key& key, std::uint32_t& next) {
     std::size_t h = hash(key) & mask_;
-    while (stamps_[h] == generation_) {
-      if (keys_[h] == key) return values_[h];
+    while (slots_[h].stamp == generation_) {
+      if (slots_[h].key == key) return slots_[h].value;
       h = (h + 1) & mask_;
     }
-    stamps_[h] = generation_;
-    keys_[h] = key;
-    values_[h] = next++;
-    return values_[h];
+    slots_[h] = Slot{key, next, generation_};
+    return next++;
   }
 
 private:
+  // key, value and stamp side by side: one cache line per probe
+  struct Slot {
+    Key key{};
+    std::uint32_t value = 0, stamp = 0;
+  };
+
   static std::uint64_t mix(std::uint64_t x) { return (x * 0x9E3779B97F4A7C15ull) >> 32; }
   template <class I>
   static std::size_t hash(I x, std::enable_if_t<std::is_integral<I>::value>* = nullptr) {
@@ -371,8 +373,7 @@ private:
                                           static_cast<std::uint64_t>(e.second)));
   }
 
-  std::vector<Key> keys_;
-  std::vector<std::uint32_t> values_, stamps_;
+  std::vector<Slot> slots_;
   std::uint32_t generation_ = 0;
   std::size_t mask_ = 0;
 };
