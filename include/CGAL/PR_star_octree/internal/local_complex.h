@@ -95,46 +95,38 @@ std::size_t intersection_size(const Vector& a, const Vector& b) {
 // VT (paper Algorithm 1) of the vertices [vb, vb + nv) from the tetrahedra `shared` (a range of
 // indices into T) and the contiguous range `owned` of T, in CSR form: the star of vertex vb + i is
 // vt[offsets[i], offsets[i + 1]), in increasing tetrahedron order when `shared` precedes `owned`
-// and is sorted.  Count, then fill, without branches: a vertex outside the range goes to a dummy
-// slot `nv`, written past the end of the real data.
+// and is sorted.  One pass over the tetrahedra appends their corners in the leaf to `scratch` as
+// (vertex slot, tetrahedron) pairs, without a branch (a corner outside the leaf is written, then
+// overwritten); a counting sort of the pairs follows.  (Counting the corners outside in a dummy
+// slot instead serialises the loop on that slot's counter.)
 template <class Tetrahedron, class Shared, class Index>
 void build_leaf_vertex_tetrahedra(const Tetrahedron* T, const Shared& shared, std::pair<Index, Index> owned,
                                   Index vb, std::size_t nv, std::vector<Index>& offsets,
                                   std::vector<Index>& vt, std::vector<Index>& scratch) {
-  offsets.assign(nv + 2, 0);
-  Index* count = offsets.data() + 1;
-  auto slot = [&](Index v) {
-    const std::size_t d = static_cast<Index>(v - vb); // wraps around for v < vb
-    return d < nv ? d : nv;
-  };
+  const std::size_t n_shared = static_cast<std::size_t>(std::distance(shared.begin(), shared.end()));
+  const std::size_t n = n_shared + (owned.second - owned.first);
+  scratch.resize(8 * n + nv + 2); // the pairs, then the insertion positions
+  Index* corners = scratch.data();
+  std::size_t m = 0;
   auto add = [&](Index t) {
     const Tetrahedron& c = T[t];
-    ++count[slot(c[0])];
-    ++count[slot(c[1])];
-    ++count[slot(c[2])];
-    ++count[slot(c[3])];
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t d = static_cast<Index>(c[k] - vb); // wraps around for c[k] < vb
+      corners[2 * m] = static_cast<Index>(d);
+      corners[2 * m + 1] = t;
+      m += (d < nv);
+    }
   };
   for (Index t : shared) add(t);
   for (Index t = owned.first; t < owned.second; ++t) add(t);
-  offsets[nv + 1] = 0; // the dummy slot writes to one trash position
+  offsets.assign(nv + 1, 0);
+  for (std::size_t j = 0; j < m; ++j) ++offsets[corners[2 * j] + 1];
   for (std::size_t i = 0; i < nv; ++i) offsets[i + 1] += offsets[i];
-  vt.resize(offsets[nv] + 1);
-  scratch.assign(offsets.begin(), offsets.end() - 1);
-  scratch[nv] = offsets[nv];
-  Index* pos = scratch.data();
+  vt.resize(m);
+  Index* pos = corners + 2 * m;
+  std::copy(offsets.begin(), offsets.end() - 1, pos);
   Index* out = vt.data();
-  auto put = [&](Index t) {
-    const Tetrahedron& c = T[t];
-    for (int k = 0; k < 4; ++k) {
-      const std::size_t i = slot(c[k]);
-      out[pos[i]] = t;
-      pos[i] += (i != nv);
-    }
-  };
-  for (Index t : shared) put(t);
-  for (Index t = owned.first; t < owned.second; ++t) put(t);
-  offsets.resize(nv + 1);
-  vt.resize(offsets[nv]);
+  for (std::size_t j = 0; j < m; ++j) out[pos[corners[2 * j]]++] = corners[2 * j + 1];
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -610,60 +602,47 @@ public:
 private:
   using Triangle = std::array<std::uint32_t, 3>;
 
-  // Local ids and the CSR of the link triangles of each leaf vertex.
+  // Local ids and the CSR of the link triangles of each leaf vertex: one pass over the
+  // tetrahedra appends the link triangle of each corner in the leaf (branch-free, as VT), then a
+  // counting sort groups them by vertex.
   template <class Tetrahedron, class Shared>
   void gather(const Tetrahedron* T, const Shared& shared, std::pair<Index, Index> owned, Index vb,
               std::size_t nv, bool keep_tetrahedra) {
-    offsets_.assign(nv + 2, 0);
-    std::uint32_t* count = offsets_.data() + 1;
-    auto slot = [&](Index v) {
-      const std::size_t d = static_cast<Index>(v - vb); // wraps around for v < vb
-      return d < nv ? d : nv;
-    };
-    std::size_t n_tets = 0;
-    auto add = [&](Index t) {
-      const Tetrahedron& c = T[t];
-      ++count[slot(c[0])];
-      ++count[slot(c[1])];
-      ++count[slot(c[2])];
-      ++count[slot(c[3])];
-      ++n_tets;
-    };
-    for (Index t : shared) add(t);
-    for (Index t = owned.first; t < owned.second; ++t) add(t);
-    offsets_[nv + 1] = 0; // the dummy slot writes to one trash position
-    for (std::size_t i = 0; i < nv; ++i) offsets_[i + 1] += offsets_[i];
-    triangles_.resize(offsets_[nv] + 1);
-    pos_.assign(offsets_.begin(), offsets_.end() - 1);
-    pos_[nv] = offsets_[nv];
+    const std::size_t n_tets =
+        static_cast<std::size_t>(std::distance(shared.begin(), shared.end())) + (owned.second - owned.first);
     others_.reset(3 * n_tets);
     vertices_.resize(nv);
     for (std::size_t i = 0; i < nv; ++i) vertices_[i] = static_cast<Index>(vb + i);
     const std::uint32_t base = static_cast<std::uint32_t>(nv);
     std::uint32_t n_others = 0;
     auto id = [&](Index v) -> std::uint32_t {
-      const std::size_t d = static_cast<Index>(v - vb);
+      const std::size_t d = static_cast<Index>(v - vb); // wraps around for v < vb
       if (d < nv) return static_cast<std::uint32_t>(d);
       const std::uint32_t j = others_.find_or_insert(v, n_others);
       if (j == vertices_.size() - nv) vertices_.push_back(v);
       return base + j;
     };
     tetrahedra_.resize(keep_tetrahedra ? n_tets : 0);
-    std::uint32_t* pos = pos_.data();
-    Triangle* out = triangles_.data();
-    std::size_t n = 0;
-    auto put = [&](Index t) {
+    corners_.resize(4 * n_tets + 1);
+    Corner* corners = corners_.data();
+    std::size_t m = 0, n = 0;
+    auto add = [&](Index t) {
       const Tetrahedron& c = T[t];
       const std::array<std::uint32_t, 4> l{{id(c[0]), id(c[1]), id(c[2]), id(c[3])}};
       for (int k = 0; k < 4; ++k) {
-        const std::size_t i = l[k] < base ? l[k] : nv;
-        out[pos[i]] = Triangle{{l[link_face[k][0]], l[link_face[k][1]], l[link_face[k][2]]}};
-        pos[i] += (i != nv);
+        corners[m] = Corner{l[k], {{l[link_face[k][0]], l[link_face[k][1]], l[link_face[k][2]]}}};
+        m += (l[k] < base);
       }
       if (keep_tetrahedra) tetrahedra_[n++] = l;
     };
-    for (Index t : shared) put(t);
-    for (Index t = owned.first; t < owned.second; ++t) put(t);
+    for (Index t : shared) add(t);
+    for (Index t = owned.first; t < owned.second; ++t) add(t);
+    offsets_.assign(nv + 1, 0);
+    for (std::size_t j = 0; j < m; ++j) ++offsets_[corners[j].vertex + 1];
+    for (std::size_t i = 0; i < nv; ++i) offsets_[i + 1] += offsets_[i];
+    pos_.assign(offsets_.begin(), offsets_.end() - 1);
+    triangles_.resize(m);
+    for (std::size_t j = 0; j < m; ++j) triangles_[pos_[corners[j].vertex]++] = corners[j].link;
   }
 
   Link_kind classify(std::size_t i, bool check_links) {
@@ -763,6 +742,13 @@ private:
     const Triangle* end() const { return last; }
   };
 
+  // a corner of a tetrahedron in the leaf: its vertex and the opposite face, in local ids
+  struct Corner {
+    std::uint32_t vertex;
+    Triangle link;
+  };
+
+  std::vector<Corner> corners_;
   std::vector<std::uint32_t> offsets_, pos_;
   std::vector<Triangle> triangles_;
   Small_map<Index> others_;
