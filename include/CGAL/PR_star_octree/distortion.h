@@ -23,6 +23,7 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -194,8 +195,10 @@ Vertex_curvature vertex_curvature(const Leaf_topology<Octree>& local, const Fiel
 /// \param curvature_map receives the curvature of each vertex
 /// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf
 /// \tparam ConcurrencyTag `CGAL::Parallel_tag`, `CGAL::Sequential_tag` or the default
-///         `CGAL::Parallel_if_available_tag`: the same values either way, bit for bit (in parallel,
-///         the field map is read from several threads)
+///         `CGAL::Parallel_if_available_tag`: the same values either way, bit for bit (the field
+///         map is read once per vertex, from the calling thread, before the leaves; a field map of
+///         the octree, `scalar_field_map()` or `coordinate_field_map()`, is read in place, from
+///         several threads in parallel)
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, class I, class FieldMap,
           class CurvatureMap, class NP = parameters::Default_named_parameters>
 Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const FieldMap& field,
@@ -212,6 +215,18 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
   // In parallel, the leaves write their own slots of `result` (octree numbering), copied to the
   // user's map afterwards; sequentially, each leaf writes to the map directly.
   std::vector<Vertex_curvature> result(parallel ? tree.number_of_vertices() : 0);
+  // A field in the user's numbering is copied into the octree's numbering first, one read per
+  // vertex (the leaves would read it at scattered places, several times per vertex).
+  constexpr bool in_place = std::is_same<FieldMap, Octree_field_map<Octree>>::value;
+  std::vector<double> values(in_place ? 0 : tree.number_of_vertices());
+  for (std::size_t v = 0; v < values.size(); ++v)
+    values[v] = internal::field_value(tree, field, static_cast<I>(v));
+  auto value = [&](I v) {
+    if constexpr (in_place)
+      return internal::field_value(tree, field, v);
+    else
+      return values[v];
+  };
   internal::process_leaves<ConcurrencyTag>(
       tree, 0u, State(), // the leaf's tetrahedra only: the links are gathered here
       [&](State& state, const Leaf_topology<Octree>& local, std::size_t) {
@@ -228,7 +243,7 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
         for (std::size_t j = 0; j < m; ++j) {
           const I v = state.links.vertex(j);
           state.points[j] = tree.coordinates(tree.point(v));
-          state.fields[j] = internal::field_value(tree, field, v);
+          state.fields[j] = value(v);
         }
         // Each tetrahedron of the leaf once, for all its corners in the leaf.  The leaf's list is
         // in increasing order, as every star, so each vertex sums its corners in the same order as
