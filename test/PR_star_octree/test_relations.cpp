@@ -665,6 +665,40 @@ int main(int argc, char** argv) {
     check_mesh(cube, "cube (6 tetrahedra)", kvs, true);
   }
 
+  // Links of more than 64 vertices (the link kernel tests small links on 64-bit masks and larger
+  // ones by hashing), checked against the brute force: a double cone, 2n tetrahedra around a
+  // centre vertex whose link is a sphere of n + 2 vertices, the apices' links discs of n + 1
+  // vertices; with a second double cone on the same centre (turned by 90 degrees, twice as large),
+  // the centre is pinched (two spheres).  n = 62, 63 put the centre's link on either side of 64.
+  for (int n : {20, 62, 63, 100}) {
+    for (int cones : {1, 2}) {
+      Mesh m;
+      m.points.push_back({0, 0, 0}); // the centre
+      for (int c = 0; c < cones; ++c) {
+        // cone c in the coordinates (axis, u, w): (z, x, y) for the first, (x, y, z) for the second
+        auto point = [&](double axis, double u, double w) {
+          const double s = c + 1.;
+          return c == 0 ? Mesh::Point_3(s * u, s * w, s * axis) : Mesh::Point_3(s * axis, s * u, s * w);
+        };
+        const Index top = static_cast<Index>(m.points.size());
+        m.points.push_back(point(1, 0, 0));
+        m.points.push_back(point(-1, 0, 0));
+        const Index ring = static_cast<Index>(m.points.size());
+        for (int i = 0; i < n; ++i) {
+          const double a = 2 * 3.14159265358979323846 * i / n;
+          m.points.push_back(point(0, std::cos(a), std::sin(a)));
+        }
+        for (int i = 0; i < n; ++i) {
+          const Index r0 = ring + i, r1 = ring + (i + 1) % n;
+          m.tetrahedra.push_back({0, top, r0, r1});
+          m.tetrahedra.push_back({0, top + 1, r1, r0});
+        }
+      }
+      check_mesh(m, "double cone" + std::string(cones == 2 ? "s" : "") + " of " + std::to_string(n), kvs,
+                 cones == 1);
+    }
+  }
+
   for (const char* name :
        {"sphere.mesh", "torus.mesh", "cube.mesh", "sphere_tetgen.mesh", "cube_tetgen.vtu"}) {
     const auto file = data.generated_file(name);

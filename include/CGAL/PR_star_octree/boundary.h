@@ -34,6 +34,12 @@ enum class Vertex_type : unsigned char {
   NONMANIFOLD = 3   ///< link is neither (pinched vertex, non-manifold edge or face, several sheets)
 };
 
+static_assert(static_cast<int>(Vertex_type::UNREFERENCED) == static_cast<int>(internal::Link_kind::EMPTY) &&
+                  static_cast<int>(Vertex_type::INTERIOR) == static_cast<int>(internal::Link_kind::CLOSED) &&
+                  static_cast<int>(Vertex_type::BOUNDARY) == static_cast<int>(internal::Link_kind::OPEN) &&
+                  static_cast<int>(Vertex_type::NONMANIFOLD) == static_cast<int>(internal::Link_kind::OTHER),
+              "Vertex_type and internal::Link_kind must have the same values");
+
 /// \ingroup PkgPRStarOctreeRef
 /// How many vertices of each `Vertex_type` a classification found.
 struct Vertex_type_counts {
@@ -99,9 +105,24 @@ public:
     return link_.euler_count_says_boundary() ? Vertex_type::BOUNDARY : Vertex_type::INTERIOR;
   }
 
+  /// classifies every vertex of the leaf of `local` at once (no relation needs to have been built):
+  /// calls `f(v, type)` for each vertex `v` of the leaf, in increasing order, with the type that
+  /// `classify(local, v)` would return.  Faster than vertex by vertex: the links of the whole leaf
+  /// are gathered in one pass over its tetrahedra.
+  template <class Function>
+  void classify_leaf(const Leaf_topology<Octree>& local, Function f) {
+    const auto tets = local.tetrahedra();
+    const Index vb = local.vertex_begin();
+    const std::size_t nv = local.vertex_end() - vb;
+    links_.build(local.octree().tetrahedra().data(), tets.shared(), tets.owned(), vb, nv, check_links_);
+    for (std::size_t i = 0; i < nv; ++i)
+      f(static_cast<Index>(vb + i), static_cast<Vertex_type>(links_.kind(i)));
+  }
+
 private:
   bool check_links_;
   internal::Vertex_link<Index> link_;
+  internal::Leaf_links<Index> links_;
 };
 
 namespace internal {
@@ -118,12 +139,11 @@ void classify_vertices(const Octree& tree, bool with_triangles, std::vector<Vert
   types.assign(tree.number_of_vertices(), Vertex_type::UNREFERENCED);
   std::vector<std::vector<std::pair<Index, int>>> buffered(
       parallel && with_triangles ? tree.number_of_leaves() : 0);
-  const unsigned relations = VERTEX_TETRAHEDRA | (with_triangles ? TRIANGLES : 0u);
+  const unsigned relations = with_triangles ? TRIANGLES : 0u;
   process_leaves<ConcurrencyTag>(
       tree, relations, Vertex_classifier<Octree>(np),
       [&](Vertex_classifier<Octree>& classifier, const Leaf_topology<Octree>& local, std::size_t leaf) {
-        for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v)
-          types[v] = classifier.classify(local, v);
+        classifier.classify_leaf(local, [&](Index v, Vertex_type type) { types[v] = type; });
         if (!with_triangles) return;
         for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
           if (!local.owns_triangle(f) || local.triangle_tetrahedra(f).size() != 1) continue;

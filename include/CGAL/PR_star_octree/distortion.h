@@ -23,6 +23,7 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -194,8 +195,10 @@ Vertex_curvature vertex_curvature(const Leaf_topology<Octree>& local, const Fiel
 /// \param curvature_map receives the curvature of each vertex
 /// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf
 /// \tparam ConcurrencyTag `CGAL::Parallel_tag`, `CGAL::Sequential_tag` or the default
-///         `CGAL::Parallel_if_available_tag`: the same values either way, bit for bit (in parallel,
-///         the field map is read from several threads)
+///         `CGAL::Parallel_if_available_tag`: the same values either way, bit for bit (the field
+///         map is read once per vertex, from the calling thread, before the leaves; a field map of
+///         the octree, `scalar_field_map()` or `coordinate_field_map()`, is read in place, from
+///         several threads in parallel)
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, class I, class FieldMap,
           class CurvatureMap, class NP = parameters::Default_named_parameters>
 Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const FieldMap& field,
@@ -204,44 +207,69 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
   using Octree = PR_star_octree_3<GT, I>;
   constexpr bool parallel = internal::is_parallel<ConcurrencyTag>();
   struct State {
-    Vertex_classifier<Octree> classifier;
-    std::vector<double> s3, s4;
+    internal::Leaf_links<I> links;
+    std::vector<double> s3, s4, fields;
+    std::vector<std::array<double, 3>> points;
   };
   Vertex_type_counts counts;
   // In parallel, the leaves write their own slots of `result` (octree numbering), copied to the
   // user's map afterwards; sequentially, each leaf writes to the map directly.
   std::vector<Vertex_curvature> result(parallel ? tree.number_of_vertices() : 0);
+  // A field in the user's numbering is copied into the octree's numbering first, one read per
+  // vertex (the leaves would read it at scattered places, several times per vertex).
+  constexpr bool in_place = std::is_same<FieldMap, Octree_field_map<Octree>>::value;
+  std::vector<double> values(in_place ? 0 : tree.number_of_vertices());
+  for (std::size_t v = 0; v < values.size(); ++v)
+    values[v] = internal::field_value(tree, field, static_cast<I>(v));
+  auto value = [&](I v) {
+    if constexpr (in_place)
+      return internal::field_value(tree, field, v);
+    else
+      return values[v];
+  };
   internal::process_leaves<ConcurrencyTag>(
-      tree, VERTEX_TETRAHEDRA, State(),
+      tree, 0u, State(), // the leaf's tetrahedra only: the links are gathered here
       [&](State& state, const Leaf_topology<Octree>& local, std::size_t) {
-        // Each tetrahedron of the leaf once: its coordinates and field values are read once for
-        // all its corners in the leaf.  The leaf's list is in increasing order, as every star, so
-        // each vertex sums its corners in the same order as `vertex_curvature()`.
         const I vb = local.vertex_begin();
         const std::size_t nv = local.vertex_end() - vb;
+        const auto tets = local.tetrahedra();
+        // The links (checked, as `Vertex_classifier` does by default) and the leaf's tetrahedra in
+        // local ids: the coordinates and the field value of each vertex are read once per leaf.
+        state.links.build(tree.tetrahedra().data(), tets.shared(), tets.owned(), vb, nv,
+                          /* check links */ true, /* keep the tetrahedra */ true);
+        const std::size_t m = state.links.number_of_ids();
+        state.points.resize(m);
+        state.fields.resize(m);
+        for (std::size_t j = 0; j < m; ++j) {
+          const I v = state.links.vertex(j);
+          state.points[j] = tree.coordinates(tree.point(v));
+          state.fields[j] = value(v);
+        }
+        // Each tetrahedron of the leaf once, for all its corners in the leaf.  The leaf's list is
+        // in increasing order, as every star, so each vertex sums its corners in the same order as
+        // `vertex_curvature()`.
         std::vector<double>&s3 = state.s3, &s4 = state.s4;
         s3.assign(nv, 0.);
         s4.assign(nv, 0.);
         std::array<std::array<double, 3>, 4> p;
         std::array<double, 4> f;
-        for (I t : local.tetrahedra()) {
-          const auto& c = tree.tetrahedron(t);
+        for (std::size_t t = 0; t < tets.size(); ++t) {
+          const auto& l = state.links.tetrahedron(t);
           for (int i = 0; i < 4; ++i) {
-            p[i] = tree.coordinates(tree.point(c[i]));
-            f[i] = internal::field_value(tree, field, c[i]);
+            p[i] = state.points[l[i]];
+            f[i] = state.fields[l[i]];
           }
           for (int k = 0; k < 4; ++k) {
-            const std::size_t i = static_cast<I>(c[k] - vb);
-            if (i >= nv) continue;
+            if (l[k] >= nv) continue;
             const auto a = internal::corner_solid_angles(p, f, k);
-            s3[i] += a.first;
-            s4[i] += a.second;
+            s3[l[k]] += a.first;
+            s4[l[k]] += a.second;
           }
         }
         for (std::size_t i = 0; i < nv; ++i) {
           const I v = static_cast<I>(vb + i);
           const Vertex_curvature c =
-              internal::finish_curvature(s3[i], s4[i], state.classifier.classify(local, v));
+              internal::finish_curvature(s3[i], s4[i], static_cast<Vertex_type>(state.links.kind(i)));
           if constexpr (parallel)
             result[v] = c;
           else {

@@ -88,7 +88,7 @@ Validity_result check_validity(const PR_star_octree_3<GT, I>& tree,
   std::vector<Leaf_result> per_leaf(leaves);
   auto orientation = tree.geom_traits().orientation_3_object();
   internal::process_leaves<ConcurrencyTag>(
-      tree, VERTEX_TETRAHEDRA | TRIANGLES, Vertex_classifier<Octree>(),
+      tree, TRIANGLES, Vertex_classifier<Octree>(),
       [&](Vertex_classifier<Octree>& classifier, const Leaf_topology<Octree>& local, std::size_t leaf) {
         Leaf_result& lr = per_leaf[leaf];
         const auto owned = local.tetrahedra().owned();
@@ -103,8 +103,9 @@ Validity_result check_validity(const PR_star_octree_3<GT, I>& tree,
           else
             ++lr.negative;
         }
-        for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v)
-          lr.nonmanifold_vertices += classifier.classify(local, v) == Vertex_type::NONMANIFOLD;
+        classifier.classify_leaf(local, [&](Index, Vertex_type type) {
+          lr.nonmanifold_vertices += type == Vertex_type::NONMANIFOLD;
+        });
         for (std::size_t f = 0; f < local.number_of_triangles(); ++f)
           if (local.owns_triangle(f) && local.triangle_tetrahedra(f).size() == 1)
             lr.boundary.push_back(local.triangle(f));

@@ -21,6 +21,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <tuple>
 #include <type_traits>
@@ -94,46 +95,38 @@ std::size_t intersection_size(const Vector& a, const Vector& b) {
 // VT (paper Algorithm 1) of the vertices [vb, vb + nv) from the tetrahedra `shared` (a range of
 // indices into T) and the contiguous range `owned` of T, in CSR form: the star of vertex vb + i is
 // vt[offsets[i], offsets[i + 1]), in increasing tetrahedron order when `shared` precedes `owned`
-// and is sorted.  Count, then fill, without branches: a vertex outside the range goes to a dummy
-// slot `nv`, written past the end of the real data.
+// and is sorted.  One pass over the tetrahedra appends their corners in the leaf to `scratch` as
+// (vertex slot, tetrahedron) pairs, without a branch (a corner outside the leaf is written, then
+// overwritten); a counting sort of the pairs follows.  (Counting the corners outside in a dummy
+// slot instead serialises the loop on that slot's counter.)
 template <class Tetrahedron, class Shared, class Index>
 void build_leaf_vertex_tetrahedra(const Tetrahedron* T, const Shared& shared, std::pair<Index, Index> owned,
                                   Index vb, std::size_t nv, std::vector<Index>& offsets,
                                   std::vector<Index>& vt, std::vector<Index>& scratch) {
-  offsets.assign(nv + 2, 0);
-  Index* count = offsets.data() + 1;
-  auto slot = [&](Index v) {
-    const std::size_t d = static_cast<Index>(v - vb); // wraps around for v < vb
-    return d < nv ? d : nv;
-  };
+  const std::size_t n_shared = static_cast<std::size_t>(std::distance(shared.begin(), shared.end()));
+  const std::size_t n = n_shared + (owned.second - owned.first);
+  scratch.resize(8 * n + nv + 2); // the pairs, then the insertion positions
+  Index* corners = scratch.data();
+  std::size_t m = 0;
   auto add = [&](Index t) {
     const Tetrahedron& c = T[t];
-    ++count[slot(c[0])];
-    ++count[slot(c[1])];
-    ++count[slot(c[2])];
-    ++count[slot(c[3])];
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t d = static_cast<Index>(c[k] - vb); // wraps around for c[k] < vb
+      corners[2 * m] = static_cast<Index>(d);
+      corners[2 * m + 1] = t;
+      m += (d < nv);
+    }
   };
   for (Index t : shared) add(t);
   for (Index t = owned.first; t < owned.second; ++t) add(t);
-  offsets[nv + 1] = 0; // the dummy slot writes to one trash position
+  offsets.assign(nv + 1, 0);
+  for (std::size_t j = 0; j < m; ++j) ++offsets[corners[2 * j] + 1];
   for (std::size_t i = 0; i < nv; ++i) offsets[i + 1] += offsets[i];
-  vt.resize(offsets[nv] + 1);
-  scratch.assign(offsets.begin(), offsets.end() - 1);
-  scratch[nv] = offsets[nv];
-  Index* pos = scratch.data();
+  vt.resize(m);
+  Index* pos = corners + 2 * m;
+  std::copy(offsets.begin(), offsets.end() - 1, pos);
   Index* out = vt.data();
-  auto put = [&](Index t) {
-    const Tetrahedron& c = T[t];
-    for (int k = 0; k < 4; ++k) {
-      const std::size_t i = slot(c[k]);
-      out[pos[i]] = t;
-      pos[i] += (i != nv);
-    }
-  };
-  for (Index t : shared) put(t);
-  for (Index t = owned.first; t < owned.second; ++t) put(t);
-  offsets.resize(nv + 1);
-  vt.resize(offsets[nv]);
+  for (std::size_t j = 0; j < m; ++j) out[pos[corners[2 * j]]++] = corners[2 * j + 1];
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -329,32 +322,34 @@ public:
   void reset(std::size_t n) {
     std::size_t size = 16;
     while (size < 2 * n) size *= 2;
-    if (keys_.size() < size) {
-      keys_.assign(size, Key());
-      values_.assign(size, 0);
-      stamps_.assign(size, 0);
+    if (slots_.size() < size) {
+      slots_.assign(size, Slot());
       generation_ = 0;
     }
     mask_ = size - 1;
     if (++generation_ == 0) {
-      std::fill(stamps_.begin(), stamps_.end(), 0);
+      for (Slot& s : slots_) s.stamp = 0;
       generation_ = 1;
     }
   }
   // the id of `key`; a new key gets `next`, which is then incremented
   std::uint32_t find_or_insert(const Key& key, std::uint32_t& next) {
     std::size_t h = hash(key) & mask_;
-    while (stamps_[h] == generation_) {
-      if (keys_[h] == key) return values_[h];
+    while (slots_[h].stamp == generation_) {
+      if (slots_[h].key == key) return slots_[h].value;
       h = (h + 1) & mask_;
     }
-    stamps_[h] = generation_;
-    keys_[h] = key;
-    values_[h] = next++;
-    return values_[h];
+    slots_[h] = Slot{key, next, generation_};
+    return next++;
   }
 
 private:
+  // key, value and stamp side by side: one cache line per probe
+  struct Slot {
+    Key key{};
+    std::uint32_t value = 0, stamp = 0;
+  };
+
   static std::uint64_t mix(std::uint64_t x) { return (x * 0x9E3779B97F4A7C15ull) >> 32; }
   template <class I>
   static std::size_t hash(I x, std::enable_if_t<std::is_integral<I>::value>* = nullptr) {
@@ -370,8 +365,7 @@ private:
                                           static_cast<std::uint64_t>(e.second)));
   }
 
-  std::vector<Key> keys_;
-  std::vector<std::uint32_t> values_, stamps_;
+  std::vector<Slot> slots_;
   std::uint32_t generation_ = 0;
   std::size_t mask_ = 0;
 };
@@ -417,38 +411,25 @@ public:
   template <class Tetrahedra, class Star>
   bool build(const Tetrahedra& T, const Star& star, Index v, bool with_vertices, bool stop_at_nonmanifold) {
     const std::size_t n = static_cast<std::size_t>(std::distance(star.begin(), star.end()));
-    triangles_ = n;
-    with_vertices_ = with_vertices;
-    if (with_vertices) {
-      vertex_ids_.reset(3 * n);
-      vertices_.clear();
-    }
-    edge_ids_.reset(3 * n);
-    edges_.clear();
-    std::uint32_t nv = 0;
+    start(n, with_vertices);
     for (Index t : star) {
       const auto& c = T[t];
       Index o[3];
       int m = 0;
       for (int k = 0; k < 4; ++k)
         if (c[k] != v) o[m++] = c[k];
-      std::uint32_t id[3] = {0, 0, 0};
-      if (with_vertices)
-        for (int i = 0; i < 3; ++i) {
-          id[i] = vertex_ids_.find_or_insert(o[i], nv);
-          if (id[i] == vertices_.size()) vertices_.push_back(o[i]);
-        }
-      static const int pairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
-      for (const auto& p : pairs) {
-        const Index a = o[p[0]], b = o[p[1]];
-        std::uint32_t next = static_cast<std::uint32_t>(edges_.size());
-        const bool ordered = a < b;
-        const std::uint32_t e =
-            edge_ids_.find_or_insert(ordered ? std::make_pair(a, b) : std::make_pair(b, a), next);
-        if (e == edges_.size())
-          edges_.push_back(ordered ? Edge{a, b, id[p[0]], id[p[1]], 0} : Edge{b, a, id[p[1]], id[p[0]], 0});
-        if (++edges_[e].count > 2 && stop_at_nonmanifold) return false;
-      }
+      if (!add_triangle(o, stop_at_nonmanifold)) return false;
+    }
+    return true;
+  }
+
+  // The same from the link triangles themselves (three vertices each, any order).
+  template <class Triangles>
+  bool build_from_triangles(const Triangles& triangles, bool with_vertices, bool stop_at_nonmanifold) {
+    start(static_cast<std::size_t>(std::distance(triangles.begin(), triangles.end())), with_vertices);
+    for (const auto& f : triangles) {
+      const Index o[3] = {f[0], f[1], f[2]};
+      if (!add_triangle(o, stop_at_nonmanifold)) return false;
     }
     return true;
   }
@@ -502,7 +483,42 @@ public:
   }
 
 private:
+  void start(std::size_t n, bool with_vertices) {
+    triangles_ = n;
+    with_vertices_ = with_vertices;
+    if (with_vertices) {
+      vertex_ids_.reset(3 * n);
+      vertices_.clear();
+    }
+    edge_ids_.reset(3 * n);
+    edges_.clear();
+    nv_ = 0;
+  }
+
+  // Adds the link triangle `o`; false when one of its edges is now in three triangles and `stop`.
+  bool add_triangle(const Index (&o)[3], bool stop) {
+    std::uint32_t id[3] = {0, 0, 0};
+    if (with_vertices_)
+      for (int i = 0; i < 3; ++i) {
+        id[i] = vertex_ids_.find_or_insert(o[i], nv_);
+        if (id[i] == vertices_.size()) vertices_.push_back(o[i]);
+      }
+    static const int pairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
+    for (const auto& p : pairs) {
+      const Index a = o[p[0]], b = o[p[1]];
+      std::uint32_t next = static_cast<std::uint32_t>(edges_.size());
+      const bool ordered = a < b;
+      const std::uint32_t e =
+          edge_ids_.find_or_insert(ordered ? std::make_pair(a, b) : std::make_pair(b, a), next);
+      if (e == edges_.size())
+        edges_.push_back(ordered ? Edge{a, b, id[p[0]], id[p[1]], 0} : Edge{b, a, id[p[1]], id[p[0]], 0});
+      if (++edges_[e].count > 2 && stop) return false;
+    }
+    return true;
+  }
+
   std::size_t triangles_ = 0;
+  std::uint32_t nv_ = 0;
   bool with_vertices_ = false;
   Small_map<Index> vertex_ids_;
   Small_map<std::pair<Index, Index>> edge_ids_;
@@ -510,6 +526,240 @@ private:
   std::vector<Index> vertices_;
   std::vector<unsigned char> boundary_degree_;
   Union_find uf_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// The links of all the vertices of a leaf
+// ---------------------------------------------------------------------------------------------
+
+inline int popcount64(std::uint64_t x) {
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_popcountll(x);
+#else
+  int n = 0;
+  for (; x != 0; x &= x - 1) ++n;
+  return n;
+#endif
+}
+
+inline int lowest_bit64(std::uint64_t x) { // x != 0
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctzll(x);
+#else
+  int n = 0;
+  while (!(x & 1)) {
+    x >>= 1;
+    ++n;
+  }
+  return n;
+#endif
+}
+
+// What the link of a vertex is; the values are those of `Vertex_type`.
+enum class Link_kind : unsigned char {
+  EMPTY = 0,  // the vertex is in no tetrahedron
+  CLOSED = 1, // every link edge in two link triangles (and, when checked, the link is a sphere)
+  OPEN = 2,   // a link edge in one link triangle (and, when checked, the link is a disc)
+  OTHER = 3   // a link edge in three or more link triangles, or (when checked) neither sphere nor disc
+};
+
+// The links of all the vertices of a leaf at once, from the leaf's tetrahedra only: the same
+// answers as `Vertex_link` (`build()` stopping at a non-manifold edge, then `is_sphere_or_disc()`
+// when checked, then `euler_count_says_boundary()`) vertex by vertex, faster.
+//  - The vertices of the leaf's tetrahedra get dense local ids: `v - vb` for the leaf's own
+//    vertices, `nv + i` for the others (hashed once per leaf, not once per star).
+//  - The link triangles of the leaf's vertices are gathered in CSR form by one counting and one
+//    filling pass over the tetrahedra, as VT is.
+//  - Each link with at most 64 vertices is tested on 64-bit adjacency masks of its vertices (the
+//    multiplicity of an edge is "seen" and "seen twice" bits, connectivity a breadth-first search on
+//    masks); a larger link goes through `Vertex_link` on the local ids.
+// All of it is exact integer work: the kind of a vertex does not depend on the order of anything.
+template <class Index>
+class Leaf_links {
+public:
+  // Classifies the vertices [vb, vb + nv) from the tetrahedra `shared` (indices into T) and the
+  // contiguous range `owned` of T (together: every tetrahedron incident in those vertices).
+  // With `keep_tetrahedra`, the leaf's tetrahedra are also kept in local ids (see `tetrahedron()`).
+  template <class Tetrahedron, class Shared>
+  void build(const Tetrahedron* T, const Shared& shared, std::pair<Index, Index> owned, Index vb,
+             std::size_t nv, bool check_links, bool keep_tetrahedra = false) {
+    gather(T, shared, owned, vb, nv, keep_tetrahedra);
+    kinds_.resize(nv);
+    for (std::size_t i = 0; i < nv; ++i) kinds_[i] = classify(i, check_links);
+  }
+
+  // the kind of the link of vertex vb + i
+  Link_kind kind(std::size_t i) const { return kinds_[i]; }
+
+  // The local ids: [0, nv) for the leaf's vertices, then the other vertices of its tetrahedra.
+  std::size_t number_of_ids() const { return vertices_.size(); }
+  // the vertex of local id `j`
+  Index vertex(std::size_t j) const { return vertices_[j]; }
+  // tetrahedron `i` of the leaf (in the order of `shared`, then `owned`) in local ids (after a
+  // `build()` keeping them)
+  const std::array<std::uint32_t, 4>& tetrahedron(std::size_t i) const { return tetrahedra_[i]; }
+
+private:
+  using Triangle = std::array<std::uint32_t, 3>;
+
+  // Local ids and the CSR of the link triangles of each leaf vertex: one pass over the
+  // tetrahedra appends the link triangle of each corner in the leaf (branch-free, as VT), then a
+  // counting sort groups them by vertex.
+  template <class Tetrahedron, class Shared>
+  void gather(const Tetrahedron* T, const Shared& shared, std::pair<Index, Index> owned, Index vb,
+              std::size_t nv, bool keep_tetrahedra) {
+    const std::size_t n_tets =
+        static_cast<std::size_t>(std::distance(shared.begin(), shared.end())) + (owned.second - owned.first);
+    others_.reset(3 * n_tets);
+    vertices_.resize(nv);
+    for (std::size_t i = 0; i < nv; ++i) vertices_[i] = static_cast<Index>(vb + i);
+    const std::uint32_t base = static_cast<std::uint32_t>(nv);
+    std::uint32_t n_others = 0;
+    auto id = [&](Index v) -> std::uint32_t {
+      const std::size_t d = static_cast<Index>(v - vb); // wraps around for v < vb
+      if (d < nv) return static_cast<std::uint32_t>(d);
+      const std::uint32_t j = others_.find_or_insert(v, n_others);
+      if (j == vertices_.size() - nv) vertices_.push_back(v);
+      return base + j;
+    };
+    tetrahedra_.resize(keep_tetrahedra ? n_tets : 0);
+    corners_.resize(4 * n_tets + 1);
+    Corner* corners = corners_.data();
+    std::size_t m = 0, n = 0;
+    auto add = [&](Index t) {
+      const Tetrahedron& c = T[t];
+      const std::array<std::uint32_t, 4> l{{id(c[0]), id(c[1]), id(c[2]), id(c[3])}};
+      for (int k = 0; k < 4; ++k) {
+        corners[m] = Corner{l[k], {{l[link_face[k][0]], l[link_face[k][1]], l[link_face[k][2]]}}};
+        m += (l[k] < base);
+      }
+      if (keep_tetrahedra) tetrahedra_[n++] = l;
+    };
+    for (Index t : shared) add(t);
+    for (Index t = owned.first; t < owned.second; ++t) add(t);
+    offsets_.assign(nv + 1, 0);
+    for (std::size_t j = 0; j < m; ++j) ++offsets_[corners[j].vertex + 1];
+    for (std::size_t i = 0; i < nv; ++i) offsets_[i + 1] += offsets_[i];
+    pos_.assign(offsets_.begin(), offsets_.end() - 1);
+    triangles_.resize(m);
+    for (std::size_t j = 0; j < m; ++j) triangles_[pos_[corners[j].vertex]++] = corners[j].link;
+  }
+
+  Link_kind classify(std::size_t i, bool check_links) {
+    const Triangle* first = triangles_.data() + offsets_[i];
+    const Triangle* last = triangles_.data() + offsets_[i + 1];
+    if (first == last) return Link_kind::EMPTY;
+    // Link vertex ids 0..n-1, stamped per vertex.
+    if (stamps_.size() < vertices_.size()) {
+      stamps_.resize(vertices_.size(), 0);
+      link_ids_.resize(vertices_.size(), 0);
+    }
+    if (++generation_ == 0) {
+      std::fill(stamps_.begin(), stamps_.end(), 0);
+      generation_ = 1;
+    }
+    std::uint32_t n = 0;
+    std::uint64_t bad = 0;
+    for (const Triangle* f = first; f != last; ++f) {
+      std::uint32_t x[3];
+      for (int j = 0; j < 3; ++j) {
+        const std::uint32_t g = (*f)[j];
+        if (stamps_[g] != generation_) {
+          if (n == 64) return classify_large(first, last, check_links);
+          stamps_[g] = generation_;
+          link_ids_[g] = static_cast<unsigned char>(n);
+          seen_[n] = twice_[n] = 0;
+          ++n;
+        }
+        x[j] = link_ids_[g];
+      }
+      add_edge(x[0], x[1], bad);
+      add_edge(x[1], x[2], bad);
+      add_edge(x[0], x[2], bad);
+    }
+    if (bad) return Link_kind::OTHER; // an edge in three link triangles or more
+    std::uint64_t open = 0;
+    for (std::uint32_t a = 0; a < n; ++a) open |= seen_[a] & ~twice_[a];
+    if (check_links && !is_sphere_or_disc(n, static_cast<std::size_t>(last - first), open != 0))
+      return Link_kind::OTHER;
+    return open ? Link_kind::OPEN : Link_kind::CLOSED;
+  }
+
+  // One more link triangle on the edge (a, b): its bit in both rows.
+  void add_edge(std::uint32_t a, std::uint32_t b, std::uint64_t& bad) {
+    const std::uint64_t ba = std::uint64_t(1) << b, bb = std::uint64_t(1) << a;
+    bad |= twice_[a] & ba;
+    twice_[a] |= seen_[a] & ba;
+    twice_[b] |= seen_[b] & bb;
+    seen_[a] |= ba;
+    seen_[b] |= bb;
+  }
+
+  // The vertices reached from vertex `from` through the edges of the rows `adjacency`.
+  static std::uint64_t reach(const std::uint64_t* adjacency, std::uint32_t from) {
+    std::uint64_t reached = std::uint64_t(1) << from, frontier = reached;
+    while (frontier) {
+      const int a = lowest_bit64(frontier);
+      frontier &= frontier - 1;
+      const std::uint64_t fresh = adjacency[a] & ~reached;
+      reached |= fresh;
+      frontier |= fresh;
+    }
+    return reached;
+  }
+
+  // `Vertex_link::is_sphere_or_disc()` on the masks (every edge in at most two triangles).
+  bool is_sphere_or_disc(std::uint32_t n, std::size_t triangles, bool has_boundary) {
+    long long edges2 = 0;
+    for (std::uint32_t a = 0; a < n; ++a) edges2 += popcount64(seen_[a]);
+    const long long chi = static_cast<long long>(n) - edges2 / 2 + static_cast<long long>(triangles);
+    if (!has_boundary ? chi != 2 : chi != 1) return false;
+    const std::uint64_t all = n == 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << n) - 1;
+    if (reach(seen_, 0) != all) return false;
+    if (!has_boundary) return true;
+    // The boundary edges: every boundary vertex of degree 2, and one loop through all of them.
+    std::uint64_t boundary_vertices = 0;
+    for (std::uint32_t a = 0; a < n; ++a) {
+      open_[a] = seen_[a] & ~twice_[a];
+      const int d = popcount64(open_[a]);
+      if (d != 0 && d != 2) return false;
+      if (d != 0) boundary_vertices |= std::uint64_t(1) << a;
+    }
+    return reach(open_, static_cast<std::uint32_t>(lowest_bit64(boundary_vertices))) == boundary_vertices;
+  }
+
+  Link_kind classify_large(const Triangle* first, const Triangle* last, bool check_links) {
+    const Iterator_pair range{first, last};
+    if (!large_.build_from_triangles(range, check_links, /* stop at non-manifold */ true))
+      return Link_kind::OTHER;
+    if (check_links && !large_.is_sphere_or_disc()) return Link_kind::OTHER;
+    return large_.euler_count_says_boundary() ? Link_kind::OPEN : Link_kind::CLOSED;
+  }
+
+  struct Iterator_pair {
+    const Triangle *first, *last;
+    const Triangle* begin() const { return first; }
+    const Triangle* end() const { return last; }
+  };
+
+  // a corner of a tetrahedron in the leaf: its vertex and the opposite face, in local ids
+  struct Corner {
+    std::uint32_t vertex;
+    Triangle link;
+  };
+
+  std::vector<Corner> corners_;
+  std::vector<std::uint32_t> offsets_, pos_;
+  std::vector<Triangle> triangles_;
+  Small_map<Index> others_;
+  std::vector<Index> vertices_;
+  std::vector<std::array<std::uint32_t, 4>> tetrahedra_;
+  std::vector<std::uint32_t> stamps_;
+  std::vector<unsigned char> link_ids_;
+  std::uint32_t generation_ = 0;
+  std::uint64_t seen_[64] = {}, twice_[64] = {}, open_[64] = {};
+  std::vector<Link_kind> kinds_;
+  Vertex_link<std::uint32_t> large_;
 };
 
 // The vertices adjacent to `v` in the tetrahedra `star` of `T`, sorted, appended to `out` from
