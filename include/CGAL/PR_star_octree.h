@@ -158,15 +158,8 @@ public:
   template <class InputMesh, class T, class Tag, class Base>
   PR_star_octree_3(const InputMesh& input, const CGAL::Named_function_parameters<T, Tag, Base>& np)
       : gt_(parameters::choose_parameter(parameters::get_parameter(np, internal_np::geom_traits),
-                                         Geom_traits())),
-        bucket_size_(parameters::choose_parameter(
-            parameters::get_parameter(np, PR_star_octree::internal_np::bucket_size), default_bucket_size)),
-        max_depth_(parameters::choose_parameter(
-            parameters::get_parameter(np, PR_star_octree::internal_np::maximum_depth), default_max_depth)),
-        keep_vertex_permutation_(parameters::choose_parameter(
-            parameters::get_parameter(np, PR_star_octree::internal_np::vertex_permutation), true)),
-        keep_tetrahedron_permutation_(parameters::choose_parameter(
-            parameters::get_parameter(np, PR_star_octree::internal_np::tetrahedron_permutation), true)) {
+                                         Geom_traits())) {
+    read_parameters(np);
     static_assert(PR_star_octree::internal::Check_input_mesh<InputMesh, Point_3>::value, "");
     check_bucket_size();
     copy_input(input);
@@ -186,15 +179,8 @@ public:
   explicit PR_star_octree_3(PR_star_octree::Indexed_tetrahedral_mesh<Point_3, Index>&& mesh,
                             const NP& np = parameters::default_values())
       : gt_(parameters::choose_parameter(parameters::get_parameter(np, internal_np::geom_traits),
-                                         Geom_traits())),
-        bucket_size_(parameters::choose_parameter(
-            parameters::get_parameter(np, PR_star_octree::internal_np::bucket_size), default_bucket_size)),
-        max_depth_(parameters::choose_parameter(
-            parameters::get_parameter(np, PR_star_octree::internal_np::maximum_depth), default_max_depth)),
-        keep_vertex_permutation_(parameters::choose_parameter(
-            parameters::get_parameter(np, PR_star_octree::internal_np::vertex_permutation), true)),
-        keep_tetrahedron_permutation_(parameters::choose_parameter(
-            parameters::get_parameter(np, PR_star_octree::internal_np::tetrahedron_permutation), true)) {
+                                         Geom_traits())) {
+    read_parameters(np);
     check_bucket_size();
     take_mesh(std::move(mesh));
     build_with(np);
@@ -375,6 +361,18 @@ private:
     return inv;
   }
 
+  // The named parameters of the constructors but `geom_traits`.
+  template <class NP>
+  void read_parameters(const NP& np) {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    namespace np_tags = PR_star_octree::internal_np;
+    bucket_size_ = choose_parameter(get_parameter(np, np_tags::bucket_size), default_bucket_size);
+    max_depth_ = choose_parameter(get_parameter(np, np_tags::maximum_depth), default_max_depth);
+    keep_vertex_permutation_ = choose_parameter(get_parameter(np, np_tags::vertex_permutation), true);
+    keep_tetrahedron_permutation_ =
+        choose_parameter(get_parameter(np, np_tags::tetrahedron_permutation), true);
+  }
   void check_bucket_size() const {
     if (bucket_size_ == 0)
       throw std::invalid_argument("PR_star_octree_3: the bucket size k_v must be at least 1");
