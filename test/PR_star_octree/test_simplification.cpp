@@ -241,9 +241,16 @@ void test_link_condition_rejects_single_tetrahedron() {
   CHECK(check.boundary);
   CHECK(check.geometry);
   CHECK(!check.link);
+  // With the defaults, every vertex is a corner (its three edges are sharp): nothing moves.
   const auto res = P::simplify(P::make_input(pts, tets), params::max_edge_length(10.0));
   CHECK_EQUAL(res.mesh.tetrahedra.size(), std::size_t(1));
-  CHECK_EQUAL(res.statistics.blocked.link, std::size_t(6));
+  CHECK_EQUAL(res.statistics.blocked.feature, std::size_t(6));
+  // Without sharp edges (feature angle 180 degrees), the link condition is what refuses.
+  const auto smooth =
+      P::simplify(P::make_input(pts, tets), params::max_edge_length(10.0).feature_angle(180.0));
+  CHECK_EQUAL(smooth.mesh.tetrahedra.size(), std::size_t(1));
+  CHECK_EQUAL(smooth.statistics.blocked.link, std::size_t(6));
+  CHECK(smooth.statistics.stop == P::Simplification_stop::NOTHING_LEFT);
 }
 
 // A solid torus with a triangular cross-section, one prism (three tetrahedra) per sector and
@@ -326,6 +333,26 @@ struct Run {
   std::size_t bucket_size = Octree::default_bucket_size;
 };
 
+// The smallest dihedral angle of a mesh, in degrees, by the definition: the angle between the
+// two faces at each edge, from their normals (independent of tetrahedron_quality.h).
+template <class Tets>
+double min_dihedral(const std::vector<Point>& pts, const Tets& tets) {
+  double best = 180;
+  for (const auto& c : tets)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        int k = 0;
+        while (k == i || k == j) ++k;
+        int l = 6 - i - j - k;
+        const Kernel::Vector_3 e = pts[c[j]] - pts[c[i]];
+        const Kernel::Vector_3 n1 = CGAL::cross_product(e, pts[c[k]] - pts[c[i]]);
+        const Kernel::Vector_3 n2 = CGAL::cross_product(e, pts[c[l]] - pts[c[i]]);
+        const double cosine = n1 * n2 / std::sqrt(n1.squared_length() * n2.squared_length());
+        best = std::min(best, std::acos(std::max(-1.0, std::min(1.0, cosine))) * 180 / CGAL_PI);
+      }
+  return best;
+}
+
 // Runs one simplification and checks everything that must hold of its output.
 P::Simplification_statistics check_run(const Mesh& mesh, const Brute& in, const P::Validity_result& vin,
                                        const Run& o, const std::string& name) {
@@ -359,6 +386,14 @@ P::Simplification_statistics check_run(const Mesh& mesh, const Brute& in, const 
   if (vin.valid) CHECK(v.valid);
   CHECK_EQUAL(v.euler_characteristic, vin.euler_characteristic);
   CHECK_EQUAL(v.boundary_components, vin.boundary_components);
+  // Quality floor (5 degrees by default): no tetrahedron is worse than the input's worst, unless
+  // above the floor.
+  const double min_in = min_dihedral(mesh.points, mesh.tetrahedra);
+  const double min_out = min_dihedral(res.mesh.points, res.mesh.tetrahedra);
+  if (!(min_out >= std::min(min_in, 5.0) - 1e-9))
+    FAIL(name << ": smallest dihedral angle " << min_out << " < " << min_in);
+  if (o.target_fraction > 0 && s.stop != P::Simplification_stop::TARGET_REACHED)
+    CHECK(s.stop == P::Simplification_stop::BLOCKED);
 
   // Vertices never move; boundary vertices of the output were boundary vertices of the input.
   const Brute out = brute_force(res.mesh.points, res.mesh.tetrahedra);

@@ -18,6 +18,33 @@ namespace CGAL {
 namespace PR_star_octree {
 
 /// \ingroup PkgPRStarOctreeRef
+/// The order in which `simplify()` collapses its candidate edges.
+enum class Collapse_priority {
+  EDGE_LENGTH,  ///< shortest edge first (or the `priority` functor given)
+  QUADRIC_ERROR ///< smallest error first: the mean squared distance of the merged vertex to the planes of the
+                ///< input surface triangles its ends stand for (Garland-Heckbert quadrics), then the shortest
+};
+
+/// \ingroup PkgPRStarOctreeRef
+/// Where the vertex that survives a collapse goes.
+enum class Collapse_placement {
+  HALF_EDGE, ///< it stays where it is (one end is removed into the other)
+  OPTIMAL    ///< at the point of the edge of smallest quadric error (the midpoint inside the volume), when
+             ///< both ends are of the same stratum (both inside, or both on one smooth surface patch) and
+             ///< that point passes every check; otherwise a half-edge collapse
+};
+
+/// \ingroup PkgPRStarOctreeRef
+/// Why `simplify()` stopped.
+enum class Simplification_stop {
+  TARGET_REACHED, ///< the target fraction was removed
+  NOTHING_LEFT,   ///< without a target: no edge under the length bound can be collapsed any more
+  BLOCKED,        ///< before the target: a round removed nothing (see
+                  ///< `Simplification_statistics::blocked_last_round`)
+  MAX_ROUNDS      ///< before the target: the maximum number of rounds was reached
+};
+
+/// \ingroup PkgPRStarOctreeRef
 /// What a run of `simplify()` did.
 struct Simplification_statistics {
   std::size_t input_vertices = 0, output_vertices = 0;
@@ -29,13 +56,20 @@ struct Simplification_statistics {
       0;              ///< the largest queue, over all leaves and rounds (the memory proxy of Table 3)
   double seconds = 0; ///< wall-clock time of the whole run, octree builds included
   /// candidate edges (shorter than the round's threshold) that were not collapsed, by reason; a
-  /// candidate is counted under the first condition it fails, in this order
+  /// candidate is counted under the first check its preferred collapse fails
   struct Blocked {
-    std::size_t different_leaves = 0; ///< its two ends are in different leaves (counted once per round)
-    std::size_t boundary = 0;         ///< boundary condition (or a non-manifold end)
-    std::size_t flip = 0;             ///< geometric condition: a tetrahedron would flip or become flat
-    std::size_t link = 0;             ///< link condition
+    std::size_t different_leaves = 0; ///< only the end in another leaf could be removed
+    std::size_t boundary =
+        0; ///< boundary condition: a surface vertex not moving along the surface, or a non-manifold end
+    std::size_t flip = 0;    ///< geometric condition: a tetrahedron would flip or become flat
+    std::size_t link = 0;    ///< link condition (of the volume, of the surface or of the feature curves)
+    std::size_t feature = 0; ///< a corner, or a feature vertex not moving along its feature curve
+    std::size_t quality = 0; ///< the quality floor
+    std::size_t error = 0;   ///< the bound on the distance to the input surface
   } blocked;
+  Blocked blocked_last_round; ///< the same counts in the last round (what stopped a `BLOCKED` run)
+  Simplification_stop stop = Simplification_stop::NOTHING_LEFT; ///< why it stopped
+  double max_boundary_error = 0; ///< the bound used on the distance to the input surface (infinity: none)
 };
 
 /// \ingroup PkgPRStarOctreeRef
@@ -45,7 +79,8 @@ struct Simplification_result {
   /// positively oriented tetrahedra; the point data of the input (its scalar field) and its
   /// tetrahedron labels carried along
   Indexed_tetrahedral_mesh<Point_3> mesh;
-  /// for each output vertex, its index in the input (a half-edge collapse never moves a vertex)
+  /// for each output vertex, the input vertex it stands for (its position too, unless the optimal placement
+  /// moved it)
   std::vector<std::size_t> input_vertex;
   /// for each output tetrahedron, its index in the input (its label, if any, is the input's)
   std::vector<std::size_t> input_tetrahedron;

@@ -27,6 +27,14 @@ namespace PR_star_octree {
   X(max_edge_length)                                                                                         \
   X(max_rounds)                                                                                              \
   X(priority)                                                                                                \
+  X(quality_measure)                                                                                         \
+  X(quality_floor)                                                                                           \
+  X(feature_angle)                                                                                           \
+  X(max_boundary_error)                                                                                      \
+  X(collapse_priority)                                                                                       \
+  X(collapse_placement)                                                                                      \
+  X(vertex_is_constrained_map)                                                                               \
+  X(edge_is_constrained_map)                                                                                 \
   X(progress)                                                                                                \
   X(domain_curvature_map)                                                                                    \
   X(vertex_type_map)                                                                                         \

@@ -22,6 +22,7 @@
 #include <CGAL/PR_star_octree/parameters.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <iterator>
 #include <limits>
@@ -31,6 +32,25 @@
 
 namespace CGAL {
 namespace PR_star_octree {
+namespace internal {
+
+// The user's constraints, from the property maps (input indices), if given.
+inline bool constrained_vertex(CGAL::internal_np::Param_not_found, std::size_t) {
+  return false;
+}
+template <class Map>
+bool constrained_vertex(const Map& map, std::size_t v) {
+  return get(map, v);
+}
+inline bool constrained_edge(CGAL::internal_np::Param_not_found, std::size_t, std::size_t) {
+  return false;
+}
+template <class Map>
+bool constrained_edge(const Map& map, std::size_t a, std::size_t b) {
+  return get(map, std::make_pair((std::min)(a, b), (std::max)(a, b)));
+}
+
+} // namespace internal
 
 /// \ingroup PkgPRStarOctreeRef
 /// The default priority of a half-edge collapse: the squared length of the edge (shortest first),
@@ -113,6 +133,20 @@ auto simplify(const InputMesh& input, const NP& np = parameters::default_values(
   options.bucket_size =
       choose_parameter(get_parameter(np, internal_np::bucket_size), std::size_t(Octree::default_bucket_size));
   options.max_rounds = choose_parameter(get_parameter(np, internal_np::max_rounds), std::size_t(1000));
+  options.quality_measure =
+      choose_parameter(get_parameter(np, internal_np::quality_measure), Quality_measure::MIN_DIHEDRAL_ANGLE);
+  options.quality_floor =
+      choose_parameter(get_parameter(np, internal_np::quality_floor),
+                       options.quality_measure == Quality_measure::RADIUS_RATIO ? 0.1 : 5.);
+  options.feature_angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 40.);
+  const double error_bound = choose_parameter(get_parameter(np, internal_np::max_boundary_error), -1.);
+  options.quadric_priority =
+      choose_parameter(get_parameter(np, internal_np::collapse_priority), Collapse_priority::EDGE_LENGTH) ==
+      Collapse_priority::QUADRIC_ERROR;
+  options.optimal_placement = choose_parameter(get_parameter(np, internal_np::collapse_placement),
+                                               Collapse_placement::HALF_EDGE) == Collapse_placement::OPTIMAL;
+  const auto vertex_constrained = get_parameter(np, internal_np::vertex_is_constrained_map);
+  const auto edge_constrained = get_parameter(np, internal_np::edge_is_constrained_map);
   if (!(options.target_fraction >= 0 && options.target_fraction < 1))
     throw std::invalid_argument("simplify: the target fraction must be in [0, 1)");
   if (!(options.max_edge_length > 0))
@@ -121,6 +155,16 @@ auto simplify(const InputMesh& input, const NP& np = parameters::default_values(
     throw std::invalid_argument("simplify: give a target fraction or a maximum edge length");
   if (options.bucket_size == 0)
     throw std::invalid_argument("simplify: the bucket size k_v must be at least 1");
+  if (!(options.quality_floor >= 0) ||
+      (options.quality_measure == Quality_measure::RADIUS_RATIO ? options.quality_floor > 1
+                                                                : options.quality_floor > 70.5))
+    throw std::invalid_argument(
+        "simplify: the quality floor must be in [0, 70.5] degrees (minimum dihedral angle) or "
+        "[0, 1] (radius ratio)");
+  if (!(options.feature_angle >= 0))
+    throw std::invalid_argument("simplify: the feature angle must be non-negative (degrees)");
+  if (std::isnan(error_bound))
+    throw std::invalid_argument("simplify: the boundary error bound is not a number");
 
   const auto start = std::chrono::steady_clock::now();
   Simplification_result<Point_3> result;
@@ -149,9 +193,31 @@ auto simplify(const InputMesh& input, const NP& np = parameters::default_values(
   }
   s.input_vertices = points.size();
   s.input_tetrahedra = tets.size();
+  // The default error bound: 0.2% of the diagonal of the bounding box.
+  if (error_bound < 0) {
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (std::size_t v = 0; v < points.size(); ++v) {
+      const double c[3] = {CGAL::to_double(gt.compute_x_3_object()(points[v])),
+                           CGAL::to_double(gt.compute_y_3_object()(points[v])),
+                           CGAL::to_double(gt.compute_z_3_object()(points[v]))};
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = v == 0 ? c[i] : (std::min)(lo[i], c[i]);
+        hi[i] = v == 0 ? c[i] : (std::max)(hi[i], c[i]);
+      }
+    }
+    options.max_boundary_error =
+        0.002 * std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                          (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  } else {
+    options.max_boundary_error = error_bound;
+  }
+  s.max_boundary_error = options.max_boundary_error;
 
   internal::Local_simplifier<GeomTraits, Priority> simplifier(options, priority, gt);
-  simplifier.run(points, tets, origin, tet_origin, s);
+  simplifier.run(
+      points, tets, origin, tet_origin, labels,
+      [&](std::size_t v) { return internal::constrained_vertex(vertex_constrained, v); },
+      [&](std::size_t a, std::size_t b) { return internal::constrained_edge(edge_constrained, a, b); }, s);
 
   s.output_vertices = points.size();
   s.output_tetrahedra = tets.size();

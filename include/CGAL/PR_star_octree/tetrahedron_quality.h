@@ -33,10 +33,15 @@ namespace internal {
 using Vec3 = std::array<double, 3>;
 
 template <class Point_3>
+inline Vec3 to_vec3(const Point_3& p) {
+  return Vec3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+}
+inline Vec3 minus(const Vec3& a, const Vec3& b) {
+  return Vec3{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}};
+}
+template <class Point_3>
 inline Vec3 minus(const Point_3& a, const Point_3& b) {
-  return Vec3{{CGAL::to_double(a.x()) - CGAL::to_double(b.x()),
-               CGAL::to_double(a.y()) - CGAL::to_double(b.y()),
-               CGAL::to_double(a.z()) - CGAL::to_double(b.z())}};
+  return minus(to_vec3(a), to_vec3(b));
 }
 inline double dot(const Vec3& a, const Vec3& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -48,15 +53,9 @@ inline double norm(const Vec3& a) {
   return std::sqrt(dot(a, a));
 }
 
-} // namespace internal
-
-/// \ingroup PkgPRStarOctreeRef
-/// The smallest dihedral angle of the tetrahedron `(p, q, r, s)`, in degrees, in `[0, 180]`
-/// (0 for a flat one; the orientation does not matter).
-template <class Point_3>
-double min_dihedral_angle(const Point_3& p, const Point_3& q, const Point_3& r, const Point_3& s) {
-  using namespace internal;
-  const Point_3* v[4] = {&p, &q, &r, &s};
+// The measures on double coordinates (the public functions below convert their points).
+inline double min_dihedral_angle(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s) {
+  const Vec3* v[4] = {&p, &q, &r, &s};
   constexpr int edges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
                                {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
   double best = 180;
@@ -74,12 +73,7 @@ double min_dihedral_angle(const Point_3& p, const Point_3& q, const Point_3& r, 
   return best;
 }
 
-/// \ingroup PkgPRStarOctreeRef
-/// The radius ratio `3 r / R` of the tetrahedron `(p, q, r, s)` (`r` the inradius, `R` the
-/// circumradius): 1 for a regular tetrahedron, 0 for a flat one.
-template <class Point_3>
-double radius_ratio(const Point_3& p, const Point_3& q, const Point_3& r, const Point_3& s) {
-  using namespace internal;
+inline double radius_ratio(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s) {
   const Vec3 a = minus(q, p), b = minus(r, p), c = minus(s, p);
   const double six_volume = std::abs(dot(a, cross(b, c)));
   if (six_volume == 0) return 0;
@@ -94,6 +88,31 @@ double radius_ratio(const Point_3& p, const Point_3& q, const Point_3& r, const 
                 la * bc[2] + lb * ca[2] + lc * ab[2]}};
   const double circumradius = norm(o) / (2 * six_volume);
   return (std::min)(1., 3 * inradius / circumradius);
+}
+
+inline double tetrahedron_quality(Quality_measure m, const Vec3& p, const Vec3& q, const Vec3& r,
+                                  const Vec3& s) {
+  return m == Quality_measure::RADIUS_RATIO ? radius_ratio(p, q, r, s) : min_dihedral_angle(p, q, r, s);
+}
+
+} // namespace internal
+
+/// \ingroup PkgPRStarOctreeRef
+/// The smallest dihedral angle of the tetrahedron `(p, q, r, s)`, in degrees, in `[0, 180]`
+/// (0 for a flat one; the orientation does not matter).
+template <class Point_3>
+double min_dihedral_angle(const Point_3& p, const Point_3& q, const Point_3& r, const Point_3& s) {
+  using internal::to_vec3;
+  return internal::min_dihedral_angle(to_vec3(p), to_vec3(q), to_vec3(r), to_vec3(s));
+}
+
+/// \ingroup PkgPRStarOctreeRef
+/// The radius ratio `3 r / R` of the tetrahedron `(p, q, r, s)` (`r` the inradius, `R` the
+/// circumradius): 1 for a regular tetrahedron, 0 for a flat one.
+template <class Point_3>
+double radius_ratio(const Point_3& p, const Point_3& q, const Point_3& r, const Point_3& s) {
+  using internal::to_vec3;
+  return internal::radius_ratio(to_vec3(p), to_vec3(q), to_vec3(r), to_vec3(s));
 }
 
 /// \ingroup PkgPRStarOctreeRef
