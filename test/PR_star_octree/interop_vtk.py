@@ -10,8 +10,15 @@
 #     tetrahedra AND triangles and a hexahedron, are read by our code (`test_io_vtk --dump FILE`) with
 #     the exact counts, labels, point and cell data, and skipped cells;
 #  2. files our writers write (`test_io_vtk --convert IN OUT [ascii|binary]`) are read back by VTK and
-#     meshio with the same counts, point data and labels.
-# Usage: interop_vtk.py PATH/TO/test_io_vtk WORKDIR     exit 0: pass, 1: failure, 77: vtk or meshio absent
+#     meshio with the same counts, point data and labels;
+#  3. the shape measures of mesh_quality.h (`test_io_vtk --quality FILE`: smallest and largest
+#     dihedral angle, radius ratio of each tetrahedron) against VTK's vtkMeshQuality, on the reference
+#     grid and on the shared real meshes when present.  VTK's RadiusRatio is R / (3 r), the inverse of
+#     ours.  VTK 9.1's tetrahedron MinAngle (verdict's tet_minimum_angle) is the smallest angle between
+#     the face normals ab x bc, ab x ad, ad x cd, bc x cd, which are not consistently oriented: it is the
+#     dihedral angle at edges ab, bc, ad, cd but its supplement at ac and bd.  Over the three vertex
+#     orders abcd, acbd, abdc every edge is once such a "diagonal", so the smallest of the three VTK
+#     values is min over the edges of min(angle, 180 - angle) = min(our smallest, 180 - our largest).
 import json
 import os
 import subprocess
@@ -274,6 +281,74 @@ for out, mode in (("ours_default.vtu", None), ("ours_ascii.vtu", "ascii"), ("our
           f"{out}: meshio labels")
     mq = m.cell_data.get("quality")
     check(mq is not None and abs(np.asarray(mq[0]).sum() - tets_only["quality"]) < 1e-9, f"{out}: meshio cell data")
+
+# --- 3. tetrahedron quality against vtkMeshQuality ---
+def vtk_tets(path):
+    rd = vtk.vtkXMLUnstructuredGridReader()
+    rd.SetFileName(path)
+    rd.Update()
+    grid = rd.GetOutput()
+    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray())
+    offsets = vtk_to_numpy(grid.GetCells().GetOffsetsArray())
+    types = vtk_to_numpy(grid.GetCellTypesArray())
+    tets = np.array([conn[offsets[i]:offsets[i + 1]] for i in np.flatnonzero(types == 10)]).reshape(-1, 4)
+    return grid.GetPoints(), tets  # the tetrahedra, in the file's order
+
+
+def vtk_quality(points, tets, measure):
+    g = vtk.vtkUnstructuredGrid()
+    g.SetPoints(points)
+    for t in tets:
+        ids = vtk.vtkIdList()
+        for v in t:
+            ids.InsertNextId(int(v))
+        g.InsertNextCell(10, ids)
+    mq = vtk.vtkMeshQuality()
+    mq.SetInputData(g)
+    getattr(mq, f"SetTetQualityMeasureTo{measure}")()
+    mq.Update()
+    return vtk_to_numpy(mq.GetOutput().GetCellData().GetArray("Quality")).astype(np.float64)
+
+
+shared = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "shared", "data")
+quality_files = [source] + [os.path.join(shared, f) for f in ("bunny_sofa.vtu", "armadillo_sofa.vtu")
+                            if os.path.exists(os.path.join(shared, f))]
+for original in quality_files:
+    # Through our writer first: the shared meshes are ASCII Float32, which VTK rounds to float and we
+    # read as double; written by us (Float64), both read the same coordinates.
+    name = os.path.basename(original)
+    path = os.path.join(work, "quality_" + name)
+    r = subprocess.run([tool, "--convert", original, path], capture_output=True, text=True)
+    check(r.returncode == 0, f"{name}: test_io_vtk --convert failed: {r.stderr.strip()}")
+    if r.returncode != 0:
+        continue
+    r = subprocess.run([tool, "--quality", path], capture_output=True, text=True)
+    check(r.returncode == 0, f"{name}: test_io_vtk --quality failed: {r.stderr.strip()}")
+    if r.returncode != 0:
+        continue
+    ours = json.loads(r.stdout)
+    lo, hi, rr = (np.array(ours[k]) for k in ("min_dihedral", "max_dihedral", "radius_ratio"))
+    points, tets = vtk_tets(path)
+    check(len(lo) == len(tets), f"{name}: {len(lo)} tetrahedra measured by us, {len(tets)} by VTK")
+    if len(lo) != len(tets):
+        continue
+    vtk_min = np.minimum.reduce([vtk_quality(points, tets[:, order], "MinAngle")
+                                 for order in ([0, 1, 2, 3], [0, 2, 1, 3], [0, 1, 3, 2])])
+    err = float(np.abs(np.minimum(lo, 180 - hi) - vtk_min).max())
+    check(err < 1e-9, f"{name}: min(smallest, 180 - largest dihedral angle) differs from VTK's by up to {err}")
+    vtk_rr = 1.0 / vtk_quality(points, tets, "RadiusRatio")
+    rel = float((np.abs(rr - vtk_rr) / np.maximum(rr, 1e-300)).max())
+    check(rel < 1e-9, f"{name}: radius ratio differs from VTK's by up to {rel} (relative)")
+    m = ours["mesh"]
+    check(m["tetrahedra"] == len(lo), f"{name}: mesh_quality counts {m['tetrahedra']} tetrahedra")
+    check(m["min_dihedral"] == lo.min() and m["max_dihedral"] == hi.max() and m["min_radius_ratio"] == rr.min(),
+          f"{name}: mesh_quality's extremes are not those of its tetrahedra")
+    check(m["under_10_degrees"] == int((lo < 10).sum()) and m["under_5_degrees"] == int((lo < 5).sum()),
+          f"{name}: mesh_quality's counts under 5 and 10 degrees")
+    acute = hi < 90  # there VTK's smallest over the three orders is the smallest dihedral angle itself
+    print(f"{name}: {len(lo)} tetrahedra ({int(acute.sum())} with every dihedral angle acute), smallest dihedral "
+          f"angle {m['min_dihedral']:.4f}, largest {m['max_dihedral']:.4f} degrees, radius ratio from "
+          f"{m['min_radius_ratio']:.4f}: as VTK's (max differences {err:.2g} degrees, {rel:.2g} relative)")
 
 print(f"interop_vtk: {checks} checks, {len(failures)} failures")
 sys.exit(1 if failures else 0)

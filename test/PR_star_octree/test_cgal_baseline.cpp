@@ -4,8 +4,9 @@
 // Self-test of the CGAL Triangulation_3 baseline (benchmark/PR_star_octree/baselines): builds
 // triangulations from index arrays (a cube, grids of Kuhn-split cubes, a grid with a hole, two
 // separate blocks), checks their combinatorial validity and every relation against brute force,
-// and checks that invalid inputs are rejected.  With `--bench`, also times the build on a
-// 100 x 100 x 20 grid (1.2M tetrahedra).
+// and checks that invalid inputs are rejected.  Also the mesh quality measures (mesh_quality.h,
+// test_mesh_quality.cpp) against closed forms and CGAL's Polygon_mesh_processing.  With `--bench`, also times
+// the build on a 100 x 100 x 20 grid (1.2M tetrahedra).
 
 #include <baselines/Cgal_triangulation_baseline.h>
 
@@ -376,12 +377,17 @@ void bench() {
 
 } // namespace
 
+// test_mesh_quality.cpp
+void test_mesh_quality(const prstar_test::Data_folders& data);
+
 int main(int argc, char** argv) {
+  const prstar_test::Data_folders data(argc, argv);
   test_cube();
   test_grid();
   test_torus();
   test_two_components();
   test_invalid_inputs();
+  test_mesh_quality(data);
   if (argc > 1 && std::string(argv[1]) == "--bench") bench();
   return prstar_test::summary("test_cgal_baseline");
 }

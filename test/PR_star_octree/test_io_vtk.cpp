@@ -15,8 +15,13 @@
 //   test_io_vtk --lattice N OUT      writes an N x N x N lattice of cubes cut in 6 tetrahedra each
 //   test_io_vtk --bench FILE [reps]  reads FILE reps times; prints the best time and the rate of
 //                                    decompressed bytes (the sizes of the arrays) per second
+//   test_io_vtk --quality FILE       prints the smallest and largest dihedral angles and the radius
+//                                    ratio of every tetrahedron, in the file's order, and
+//                                    mesh_quality() of the whole, as one JSON object (interop_vtk.py
+//                                    compares them with VTK's vtkMeshQuality)
 
 #include <CGAL/PR_star_octree/IO.h>
+#include <CGAL/PR_star_octree/mesh_quality.h>
 
 #ifdef CGAL_PR_STAR_OCTREE_HAS_ZLIB
 #include <zlib.h>
@@ -784,6 +789,35 @@ static int bench(const std::string& file, int reps) {
   return 0;
 }
 
+// The shape measures of mesh_quality.h, per tetrahedron and for the whole mesh, as JSON.
+static void quality(const Mesh& m, std::ostream& out) {
+  namespace P = CGAL::PR_star_octree;
+  auto list = [&](const char* name, auto f) {
+    out << '"' << name << "\": [";
+    for (std::size_t t = 0; t < m.tetrahedra.size(); ++t) {
+      const auto& v = m.tetrahedra[t];
+      out << (t ? ", " : "") << f(m.points[v[0]], m.points[v[1]], m.points[v[2]], m.points[v[3]]);
+    }
+    out << "], ";
+  };
+  using Point = Mesh::Point_3;
+  out << std::setprecision(17) << '{';
+  list("min_dihedral", [](const Point& p, const Point& q, const Point& r, const Point& s) {
+    return P::min_dihedral_angle(p, q, r, s);
+  });
+  list("max_dihedral", [](const Point& p, const Point& q, const Point& r, const Point& s) {
+    return P::max_dihedral_angle(p, q, r, s);
+  });
+  list("radius_ratio", [](const Point& p, const Point& q, const Point& r, const Point& s) {
+    return P::radius_ratio(p, q, r, s);
+  });
+  const P::Mesh_quality q = P::mesh_quality(m.points, m.tetrahedra);
+  out << "\"mesh\": {\"tetrahedra\": " << q.tetrahedra << ", \"min_dihedral\": " << q.min_dihedral_angle
+      << ", \"max_dihedral\": " << q.max_dihedral_angle << ", \"min_radius_ratio\": " << q.min_radius_ratio
+      << ", \"under_5_degrees\": " << q.under_5_degrees << ", \"under_10_degrees\": " << q.under_10_degrees
+      << "}}\n";
+}
+
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   try {
@@ -809,6 +843,12 @@ int main(int argc, char** argv) {
       std::cout << m.points.size() << " vertices, " << m.tetrahedra.size() << " tetrahedra\n";
       return 0;
     }
+    if (mode == "--quality" && argc == 3) {
+      Mesh m;
+      IO::read_tetrahedral_mesh(argv[2], m);
+      quality(m, std::cout);
+      return 0;
+    }
     if (mode == "--bench" && (argc == 3 || argc == 4))
       return bench(argv[2], argc == 4 ? std::atoi(argv[3]) : 3);
   } catch (const std::exception& e) {
@@ -817,7 +857,7 @@ int main(int argc, char** argv) {
   }
   if (!mode.empty()) {
     std::cerr << "usage: test_io_vtk [--dump FILE | --convert IN OUT [ascii|binary] | --lattice N OUT | "
-                 "--bench FILE [reps]]\n";
+                 "--bench FILE [reps] | --quality FILE]\n";
     return 2;
   }
   tmp = fs::temp_directory_path() / ("test_io_vtk_" + std::to_string(::getpid()));
