@@ -289,6 +289,35 @@ run(nonzero "" "cannot write this format" simplify ${DATA}/torus.mesh --target 0
 if(EXISTS ${WORK}/x.mesh OR EXISTS ${WORK}/x.txt)
   message(SEND_ERROR "a failed simplify left an output file behind")
 endif()
+# simplify with the quality floor, features and error bound: the JSON reports the output quality
+# and the measured boundary distance, within the bound; an unreachable target stops with exit 4,
+# a line on stderr naming the reasons, "stop": "blocked", and the last valid mesh written.
+run(0 "\"stop\": \"target_reached\".*\"output_quality\": {\"min_dihedral\"" "" simplify ${DATA}/torus.mesh --target 0.5 -o ${WORK}/torus_q.vtu --json)
+string(JSON bound GET "${last_out}" boundary_error bound)
+string(JSON measured GET "${last_out}" boundary_error input_to_output)
+string(JSON measured2 GET "${last_out}" boundary_error output_to_input)
+string(JSON qin GET "${last_out}" input_quality min_dihedral)
+string(JSON qout GET "${last_out}" output_quality min_dihedral)
+if(measured GREATER bound OR measured2 GREATER bound)
+  message(SEND_ERROR "simplify: boundary distance ${measured} / ${measured2} over the bound ${bound}")
+endif()
+if(qout LESS 5 AND qout LESS qin)
+  message(SEND_ERROR "simplify: smallest dihedral angle ${qout} under the floor and the input's ${qin}")
+endif()
+run(4 "\"stop\": \"blocked\".*\"blocked_last_round\"" "stopped before the target: removed .*% of the tetrahedra, target 90.0%.*blocked mostly by .*wrote the last valid mesh" simplify ${DATA}/torus.mesh --target 0.9 --min-dihedral 30 -o ${WORK}/torus_blocked.vtu --json)
+if(NOT EXISTS ${WORK}/torus_blocked.vtu)
+  message(SEND_ERROR "simplify stopped before the target wrote no mesh")
+endif()
+run(0 "\"valid\": true.*\"euler_characteristic\": 0" "" validate ${WORK}/torus_blocked.vtu --json)
+run(0 "target_reached" "" simplify ${DATA}/torus.mesh --target 0.4 --priority quadric --placement optimal --min-radius-ratio 0.05 --feature-angle 60 --max-error 0.5% -o ${WORK}/torus_opt.vtu --json)
+run(0 "\"valid\": true.*\"euler_characteristic\": 0" "" validate ${WORK}/torus_opt.vtu --json)
+run(0 "" "" simplify ${DATA}/cube.mesh --target 0.3 --max-error none --feature-angle 180 --min-dihedral 0 -o ${WORK}/cube_paper.vtu --quiet)
+run(2 "" "--priority must be length or quadric" simplify ${DATA}/torus.mesh --target 0.5 --priority fast -o ${WORK}/x.mesh)
+run(2 "" "--placement must be half-edge or optimal" simplify ${DATA}/torus.mesh --target 0.5 --placement mid -o ${WORK}/x.mesh)
+run(2 "" "give one quality floor" simplify ${DATA}/torus.mesh --target 0.5 --min-dihedral 5 --min-radius-ratio 0.1 -o ${WORK}/x.mesh)
+run(2 "" "--max-error must be" simplify ${DATA}/torus.mesh --target 0.5 --max-error 2cm -o ${WORK}/x.mesh)
+run(2 "" "--feature-angle must be" simplify ${DATA}/torus.mesh --target 0.5 --feature-angle -3 -o ${WORK}/x.mesh)
+run(2 "" "--min-dihedral must be" simplify ${DATA}/torus.mesh --target 0.5 --min-dihedral 80 -o ${WORK}/x.mesh)
 
 # The options shared by the commands are declared once (tools/prstar/command.h): each has the same
 # help text in every command that takes it, and every command takes --json, --quiet and --help.

@@ -24,10 +24,11 @@ namespace prstar {
 
 /// The exit status of every command.
 enum Exit_status : int {
-  exit_success = 0,      ///< done (validate: the mesh is valid)
-  exit_error = 1,        ///< an error: unreadable or malformed file, bad input, cannot write
-  exit_usage = 2,        ///< a usage error: unknown option, missing or invalid argument
-  exit_invalid_mesh = 3, ///< validate only: the mesh was checked and is not valid
+  exit_success = 0,            ///< done (validate: the mesh is valid)
+  exit_error = 1,              ///< an error: unreadable or malformed file, bad input, cannot write
+  exit_usage = 2,              ///< a usage error: unknown option, missing or invalid argument
+  exit_invalid_mesh = 3,       ///< validate only: the mesh was checked and is not valid
+  exit_target_not_reached = 4, ///< simplify only: stopped before the target (the mesh reached is written)
 };
 
 using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;

@@ -23,7 +23,8 @@ std::string main_usage(const std::vector<prstar::Command>& commands) {
     s += "  " + c.name() + std::string(c.name().size() < 11 ? 11 - c.name().size() : 1, ' ') + c.summary() +
          '\n';
   return s + "\nRun 'prstar COMMAND --help' for the options of a command.\n" + prstar::mesh_formats() +
-         "Exit status: 0 success, 1 error, 2 usage error, 3 (validate) the mesh is not valid.\n";
+         "Exit status: 0 success, 1 error, 2 usage error, 3 (validate) the mesh is not valid,\n"
+         "4 (simplify) stopped before the target.\n";
 }
 
 bool wants_help(int argc, char** argv) {
