@@ -10,10 +10,13 @@
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/IO.h>
+#include <CGAL/PR_star_octree/mesh_quality.h>
 #include <CGAL/PR_star_octree/simplification.h>
 #include <CGAL/PR_star_octree/validity.h>
 
 #include "test_harness.h"
+
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <array>
@@ -322,17 +325,6 @@ void test_link_condition_rejects_ring() {
   CHECK_EQUAL(res.mesh.tetrahedra.size(), tets.size());
 }
 
-// ---------------------------------------------------------------------------------------------
-// Simplification of real meshes
-// ---------------------------------------------------------------------------------------------
-
-// The options of one run (given to simplify() as named parameters).
-struct Run {
-  double target_fraction = 0;                                       // 0: no target
-  double max_edge_length = std::numeric_limits<double>::infinity(); // no bound
-  std::size_t bucket_size = Octree::default_bucket_size;
-};
-
 // The smallest dihedral angle of a mesh, in degrees, by the definition: the angle between the
 // two faces at each edge, from their normals (independent of tetrahedron_quality.h).
 template <class Tets>
@@ -352,6 +344,193 @@ double min_dihedral(const std::vector<Point>& pts, const Tets& tets) {
       }
   return best;
 }
+
+// ---------------------------------------------------------------------------------------------
+// Crafted cases: one constraint alone refuses a collapse
+// ---------------------------------------------------------------------------------------------
+
+// The Kuhn triangulation of [0, n]^3 (six tetrahedra per unit cube around its (1, 1, 1) diagonal),
+// positively oriented.  Vertex (x, y, z) has index x + (n + 1) (y + (n + 1) z).
+struct Lattice {
+  std::vector<Point> points;
+  std::vector<Tet> tets;
+  int n;
+  std::uint32_t index(int x, int y, int z) const { return std::uint32_t(x + (n + 1) * (y + (n + 1) * z)); }
+};
+
+Lattice kuhn_lattice(int n) {
+  Lattice l;
+  l.n = n;
+  for (int z = 0; z <= n; ++z)
+    for (int y = 0; y <= n; ++y)
+      for (int x = 0; x <= n; ++x) l.points.emplace_back(x, y, z);
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        for (const auto& p : perms) {
+          int c[3] = {x, y, z};
+          Tet t;
+          t[0] = l.index(c[0], c[1], c[2]);
+          for (int k = 0; k < 3; ++k) {
+            ++c[p[k]];
+            t[k + 1] = l.index(c[0], c[1], c[2]);
+          }
+          if (CGAL::orientation(l.points[t[0]], l.points[t[1]], l.points[t[2]], l.points[t[3]]) ==
+              CGAL::NEGATIVE)
+            std::swap(t[2], t[3]);
+          l.tets.push_back(t);
+        }
+  return l;
+}
+
+// Only the quality floor: the interior vertex r = (2, 2, 2) is removed into its neighbour k (kept
+// by the user's vertex map), k being moved so that (r, k) is the only edge shorter than the
+// length bound and the collapse creates a sliver: positive (the exact orientation accepts it),
+// the link condition holds (both inside), no surface moves.  Every other vertex is kept by the
+// user's vertex map.  The position of k is searched
+// (deterministic pseudo-random points near (2.6, 2, 2)) by brute force on the star of r: every
+// tetrahedron of the input positive, every tetrahedron the collapse creates positive, one of them
+// under 5 degrees.  Without the floor the collapse is done; with it, it is refused for quality alone.
+void test_only_quality_floor_refuses() {
+  bool found = false;
+  unsigned seed = 12345;
+  auto uniform = [&seed]() {
+    seed = seed * 1103515245u + 12345u;
+    return double((seed >> 8) & 0xFFFF) / 65535.0;
+  };
+  for (int attempt = 0; attempt < 4000 && !found; ++attempt) {
+    Lattice l = kuhn_lattice(4);
+    const std::uint32_t r = l.index(2, 2, 2), k = l.index(3, 2, 2);
+    l.points[k] = Point(2 + uniform(), 2 + (uniform() - 0.5), 2 + (uniform() - 0.5));
+    bool ok = true;
+    double worst = 180;
+    for (const Tet& c : l.tets) {
+      ok = ok && CGAL::orientation(l.points[c[0]], l.points[c[1]], l.points[c[2]], l.points[c[3]]) ==
+                     CGAL::POSITIVE;
+      const bool has_r = std::find(c.begin(), c.end(), r) != c.end();
+      const bool has_k = std::find(c.begin(), c.end(), k) != c.end();
+      if (!has_r || has_k) continue;
+      Tet n = c;
+      for (auto& v : n)
+        if (v == r) v = k;
+      ok = ok && CGAL::orientation(l.points[n[0]], l.points[n[1]], l.points[n[2]], l.points[n[3]]) ==
+                     CGAL::POSITIVE;
+      worst = std::min(worst, min_dihedral(l.points, std::vector<Tet>{n}));
+    }
+    if (!ok || !(worst < 4)) continue;
+    // (r, k) the only edge of r under the bound (r's other edges are at least 1 long)
+    const double bound = 0.999;
+    if (!(CGAL::squared_distance(l.points[r], l.points[k]) < bound * bound)) continue;
+    const auto input = P::make_input(l.points, l.tets);
+    std::map<std::size_t, bool> keep; // every vertex but r is kept: only r can go
+    for (std::size_t v = 0; v < l.points.size(); ++v) keep[v] = v != r;
+    const auto np =
+        params::max_edge_length(bound).vertex_is_constrained_map(boost::make_assoc_property_map(keep));
+    const auto done = P::simplify(input, np.quality_floor(0.0));
+    if (done.statistics.removed_tetrahedra == 0) continue; // the link condition, say: not this case
+    found = true;
+    std::cout << "quality floor: k at " << l.points[k] << ", a sliver of " << worst << " degrees (attempt "
+              << attempt << ")" << std::endl;
+    CHECK(min_dihedral(done.mesh.points, done.mesh.tetrahedra) < 5);
+    CHECK(P::check_validity(done.mesh.points, done.mesh.tetrahedra).valid);
+    const auto refused = P::simplify(input, np);
+    CHECK_EQUAL(refused.statistics.removed_tetrahedra, std::size_t(0));
+    CHECK(refused.statistics.blocked.quality >= 1);
+    // (the other candidates join two kept vertices: refused as features in both runs)
+    CHECK_EQUAL(refused.statistics.blocked.error + refused.statistics.blocked.link +
+                    refused.statistics.blocked.flip,
+                std::size_t(0));
+    // The radius-ratio floor refuses it too.
+    const auto rr = P::simplify(input, np.quality_measure(P::Quality_measure::RADIUS_RATIO));
+    CHECK_EQUAL(rr.statistics.removed_tetrahedra, std::size_t(0));
+    CHECK(rr.statistics.blocked.quality >= 1);
+  }
+  if (!found) FAIL("no position of k gives a sliver only the quality floor refuses");
+}
+
+// Only the feature constraints: the same collapse without the floor, with both ends made corners by
+// the user's vertex map (input indices), is refused; and the cube's own corners and sharp edges
+// survive a 50% simplification exactly (the sharp edges are straight: distance 0 both ways).
+void test_only_features_refuse() {
+  Lattice l = kuhn_lattice(4);
+  const std::uint32_t r = l.index(2, 2, 2), k = l.index(3, 2, 2);
+  l.points[k] = Point(2.98, 2, 2);
+  const auto input = P::make_input(l.points, l.tets);
+  std::map<std::size_t, bool> corner{{r, true}, {k, true}};
+  const auto refused =
+      P::simplify(input, params::max_edge_length(0.99).quality_floor(0.0).vertex_is_constrained_map(
+                             boost::make_assoc_property_map(corner)));
+  CHECK_EQUAL(refused.statistics.removed_tetrahedra, std::size_t(0));
+  CHECK(refused.statistics.blocked.feature >= 1);
+  // A user feature edge (r, k) makes both ends feature-curve vertices: the collapse along it is allowed.
+  std::map<std::pair<std::size_t, std::size_t>, bool> edge{{{r, k}, true}};
+  const auto along =
+      P::simplify(input, params::max_edge_length(0.99).quality_floor(0.0).edge_is_constrained_map(
+                             boost::make_assoc_property_map(edge)));
+  CHECK(along.statistics.removed_tetrahedra > 0);
+
+  const Lattice cube = kuhn_lattice(6);
+  const auto half =
+      P::simplify(P::make_input(cube.points, cube.tets), params::target_fraction(0.5).bucket_size(40));
+  CHECK(half.statistics.stop == P::Simplification_stop::TARGET_REACHED);
+  std::size_t corners = 0;
+  for (const Point& p : half.mesh.points)
+    corners += (p.x() == 0 || p.x() == 6) && (p.y() == 0 || p.y() == 6) && (p.z() == 0 || p.z() == 6);
+  CHECK_EQUAL(corners, std::size_t(8));
+  const auto sharp =
+      P::sharp_edge_distance(cube.points, cube.tets, half.mesh.points, half.mesh.tetrahedra, 40.);
+  CHECK_EQUAL(sharp.input_to_output, 0.);
+  CHECK_EQUAL(sharp.output_to_input, 0.);
+  CHECK(sharp.output_sharp_edges >= 12);
+  const auto surface =
+      P::boundary_distance(cube.points, cube.tets, half.mesh.points, half.mesh.tetrahedra, 0.);
+  CHECK(surface.hausdorff() < 1e-9);
+  // Without sharp edges, no floor and no bound, the corners go.
+  const auto free = P::simplify(
+      P::make_input(cube.points, cube.tets),
+      params::target_fraction(0.5).bucket_size(40).feature_angle(180.0).quality_floor(0.0).max_boundary_error(
+          std::numeric_limits<double>::infinity()));
+  const auto lost = P::boundary_distance(cube.points, cube.tets, free.mesh.points, free.mesh.tetrahedra, 0.);
+  std::cout << "cube without constraints: boundary distance " << lost.hausdorff() << std::endl;
+  CHECK(lost.hausdorff() > 0.1);
+}
+
+// Only the error bound: the top-centre vertex r of the cube is raised by 0.3 (a smooth bump: its
+// triangles bend by less than 40 degrees) and its neighbour k on the top face pulled towards it,
+// so that (r, k) is the only edge shorter than 0.9.  Flattening the bump moves the surface by
+// about 0.3: refused under a bound of 0.01, allowed without a bound (no floor in either run).
+void test_only_error_bound_refuses() {
+  Lattice l = kuhn_lattice(4);
+  const std::uint32_t r = l.index(2, 2, 4), k = l.index(3, 2, 4);
+  l.points[r] = Point(2, 2, 4.3);
+  l.points[k] = Point(2.8, 2, 4);
+  const auto input = P::make_input(l.points, l.tets);
+  const auto refused =
+      P::simplify(input, params::max_edge_length(0.9).quality_floor(0.0).max_boundary_error(0.01));
+  CHECK_EQUAL(refused.statistics.removed_tetrahedra, std::size_t(0));
+  CHECK(refused.statistics.blocked.error >= 1);
+  CHECK_EQUAL(refused.statistics.blocked.feature + refused.statistics.blocked.quality, std::size_t(0));
+  const auto done = P::simplify(input, params::max_edge_length(0.9).quality_floor(0.0).max_boundary_error(
+                                           std::numeric_limits<double>::infinity()));
+  CHECK(done.statistics.removed_tetrahedra > 0);
+  const auto d = P::boundary_distance(l.points, l.tets, done.mesh.points, done.mesh.tetrahedra, 0.);
+  CHECK(d.hausdorff() > 0.01);
+  // The default bound (0.2% of the diagonal, 0.0139) refuses it too.
+  const auto by_default = P::simplify(input, params::max_edge_length(0.9).quality_floor(0.0));
+  CHECK_EQUAL(by_default.statistics.removed_tetrahedra, std::size_t(0));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Simplification of real meshes
+// ---------------------------------------------------------------------------------------------
+
+// The options of one run (given to simplify() as named parameters).
+struct Run {
+  double target_fraction = 0;                                       // 0: no target
+  double max_edge_length = std::numeric_limits<double>::infinity(); // no bound
+  std::size_t bucket_size = Octree::default_bucket_size;
+};
 
 // Runs one simplification and checks everything that must hold of its output.
 P::Simplification_statistics check_run(const Mesh& mesh, const Brute& in, const P::Validity_result& vin,
@@ -483,6 +662,9 @@ int main(int argc, char** argv) {
   test_exact_predicate_rejects();
   test_link_condition_rejects_single_tetrahedron();
   test_link_condition_rejects_ring();
+  test_only_quality_floor_refuses();
+  test_only_features_refuse();
+  test_only_error_bound_refuses();
 
   for (const char* name : {"sphere.mesh", "torus.mesh"})
     if (const auto file = data.generated_file(name)) test_mesh(*file, true);
