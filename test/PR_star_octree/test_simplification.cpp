@@ -530,14 +530,19 @@ struct Run {
   double target_fraction = 0;                                       // 0: no target
   double max_edge_length = std::numeric_limits<double>::infinity(); // no bound
   std::size_t bucket_size = Octree::default_bucket_size;
+  bool paper = false; // the paper's conditions only: no sharp edges, no quality floor, no error bound
 };
 
 // Runs one simplification and checks everything that must hold of its output.
 P::Simplification_statistics check_run(const Mesh& mesh, const Brute& in, const P::Validity_result& vin,
                                        const Run& o, const std::string& name) {
-  const auto res = P::simplify(mesh, params::target_fraction(o.target_fraction)
-                                         .max_edge_length(o.max_edge_length)
-                                         .bucket_size(o.bucket_size));
+  const auto res =
+      P::simplify(mesh, params::target_fraction(o.target_fraction)
+                            .max_edge_length(o.max_edge_length)
+                            .bucket_size(o.bucket_size)
+                            .feature_angle(o.paper ? 180. : 40.)
+                            .quality_floor(o.paper ? 0. : 5.)
+                            .max_boundary_error(o.paper ? std::numeric_limits<double>::infinity() : -1.));
   const auto& s = res.statistics;
   std::cout << "  " << name << " target " << o.target_fraction << " k_v "
             << (o.bucket_size == Octree::infinite_bucket_size ? std::string("inf")
@@ -569,8 +574,15 @@ P::Simplification_statistics check_run(const Mesh& mesh, const Brute& in, const 
   // above the floor.
   const double min_in = min_dihedral(mesh.points, mesh.tetrahedra);
   const double min_out = min_dihedral(res.mesh.points, res.mesh.tetrahedra);
-  if (!(min_out >= std::min(min_in, 5.0) - 1e-9))
+  if (!o.paper && !(min_out >= std::min(min_in, 5.0) - 1e-9))
     FAIL(name << ": smallest dihedral angle " << min_out << " < " << min_in);
+  // Error bound (0.2% of the diagonal by default), measured independently both ways (sampled).
+  if (!o.paper) {
+    const auto d =
+        P::boundary_distance(mesh.points, mesh.tetrahedra, res.mesh.points, res.mesh.tetrahedra, 0.);
+    if (!(d.hausdorff() <= s.max_boundary_error))
+      FAIL(name << ": boundary distance " << d.input_to_output << " / " << d.output_to_input << " over the bound " << s.max_boundary_error);
+  }
   if (o.target_fraction > 0 && s.stop != P::Simplification_stop::TARGET_REACHED)
     CHECK(s.stop == P::Simplification_stop::BLOCKED);
 
@@ -651,7 +663,10 @@ void test_mesh(const std::string& file, bool targets) {
   o.max_edge_length = 0.8 * sum / double(n);
   o.bucket_size = 50;
   const auto s = check_run(mesh, in, vin, o, file + " (length only)");
-  CHECK(s.removed_tetrahedra > 0);
+  if (s.removed_tetrahedra == 0) CHECK(s.stop == P::Simplification_stop::NOTHING_LEFT);
+  // With the paper's conditions only, something is removed.
+  o.paper = true;
+  CHECK(check_run(mesh, in, vin, o, file + " (length only, paper's conditions)").removed_tetrahedra > 0);
 }
 
 } // namespace

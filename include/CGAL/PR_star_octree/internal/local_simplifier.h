@@ -246,9 +246,8 @@ private:
           if (!deleted_tet_[t]) stars_[i].push_back(t);
         auto it = extras_.find(v);
         if (it == extras_.end()) continue;
-        for (Index t : it->second)
+        for (Index t : it->second) // (kept: a later leaf may need the whole star of v again)
           if (!deleted_tet_[t]) stars_[i].push_back(t);
-        extras_.erase(it);
       }
       outside_.clear();
       // Candidate edges: at least one end in the leaf, short enough.
@@ -331,9 +330,10 @@ private:
     for (Index t : tree_->leaf_tetrahedra(tree_->leaf_of_vertex(v)))
       if (!deleted_tet_[t] && contains(work_[t], v)) s.push_back(t);
     auto it = extras_.find(v);
-    if (it != extras_.end())
+    if (it != extras_.end()) // (a tetrahedron renamed into v may also be in the list of v's leaf)
       for (Index t : it->second)
         if (!deleted_tet_[t]) s.push_back(t);
+    sort_unique(s);
     return s;
   }
 
@@ -668,7 +668,7 @@ private:
   // checked on samples (the input vertices; seven points per new triangle), against a margin of
   // `error_margin` times the bound, so that what the samples miss, and the points of other
   // vertices whose nearest triangle changes, stay within the bound (measured: `mesh_quality.h`).
-  static constexpr double error_margin = 0.7;
+  static constexpr double error_margin = 0.5;
 
   bool error_ok(Index r, Index k, bool move, const Vec3& p) {
     const double tol = error_margin * options_.max_boundary_error;
@@ -712,7 +712,51 @@ private:
           return false;
     }
     if (move && tree_of_surface_.squared_distance(kpoint(p)) > tol2) return false;
+    if (!neighbours_error_ok(r, k, move, p, tol2)) return false;
     return dimension(r) > 1 || curve_error_ok(r, k);
+  }
+
+  // The points of the surface neighbours w of r (and of k when it moves), whose own fans change,
+  // stay within the bound of their fans after the collapse.
+  bool neighbours_error_ok(Index r, Index k, bool move, const Vec3& p, double tol2) {
+    affected_.clear();
+    for (Index v : {r, k}) {
+      if (v == k && !move) continue;
+      gather(star(v), old_cells_, old_labels_);
+      surface_link(old_cells_, old_labels_, v, link_r_);
+      for (const auto& e : link_r_)
+        for (Index w : {e.first, e.second})
+          if (w != r && w != k && !covered_[sid_[w]].empty()) affected_.push_back(w);
+    }
+    sort_unique(affected_);
+    for (Index w : affected_) {
+      // The star of w after the collapse: St(e) gone, r renamed k.
+      old_cells_.clear();
+      old_labels_.clear();
+      for (Index t : star(w)) {
+        if (contains(work_[t], r) && contains(work_[t], k)) continue;
+        Tetrahedron c = work_[t];
+        for (Index& x : c)
+          if (x == r) x = k;
+        old_cells_.push_back(c);
+        old_labels_.push_back(label_[t]);
+      }
+      surface_link(old_cells_, old_labels_, w, link_k_);
+      triangles_.clear();
+      auto at = [&](Index x) { return kpoint(x == k && move ? p : posd_[x]); };
+      for (const auto& e : link_k_) triangles_.emplace_back(at(w), at(e.first), at(e.second));
+      for (std::size_t s : covered_[sid_[w]]) {
+        const K::Point_3 q = kpoint(input_pos_[s]);
+        bool near = false;
+        for (const K::Triangle_3& tri : triangles_)
+          if (CGAL::squared_distance(q, tri) <= tol2) {
+            near = true;
+            break;
+          }
+        if (!near) return false;
+      }
+    }
+    return true;
   }
 
   // The input feature vertices r and k stand for stay within a quarter of the bound of the
@@ -760,13 +804,13 @@ private:
     removed_ += st_e_.size();
     stats_->removed_tetrahedra += st_e_.size();
     ++stats_->collapses;
-    const bool k_outside = !in_leaf(k);
     for (Index t : st_r) {
       if (deleted_tet_[t]) continue;
       for (Index& w : work_[t])
         if (w == r) w = k;
       st_k.push_back(t);
-      if (k_outside) extras_[k].push_back(t);
+      // (also when k is in the leaf: t may be in no list of k's leaf, and a later leaf may need St(k))
+      extras_[k].push_back(t);
     }
     st_r.clear();
     deleted_vertex_[r] = 1;
@@ -818,7 +862,7 @@ private:
   std::vector<char> deleted_tet_, deleted_vertex_;
   std::vector<std::vector<Index>> stars_;
   std::unordered_map<Index, std::vector<Index>> outside_, extras_;
-  std::vector<Index> st_e_, nbr_, old_k_nbr_, lv_r_, lv_k_;
+  std::vector<Index> st_e_, nbr_, old_k_nbr_, lv_r_, lv_k_, affected_;
   std::vector<Tetrahedron> new_cells_, changed_cells_, old_cells_;
   std::vector<int> new_labels_, old_labels_;
   std::vector<Face_record> faces_;
