@@ -11,6 +11,12 @@
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/Index_arrays_input.h>
 #include <CGAL/PR_star_octree/Mesh_complex_3_input.h>
+#include <CGAL/PR_star_octree/simplification.h>
+
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/make_mesh_3.h>
 
 #include <boost/property_map/property_map.hpp>
 
@@ -21,7 +27,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -213,7 +221,92 @@ const char* cube_off = "OFF\n8 12 0\n"
 
 } // namespace
 
+// Labels through simplification: a unit ball in two subdomains (1 above z = 0, 2 below) meshed by
+// Mesh_3, simplified to half its tetrahedra with the defaults.  Both subdomains survive with their
+// labels; the interface stays on z = 0 (as close as Mesh_3 put it); the volume of each label
+// changes by no more than the area of its boundary times the error bound; and
+// build_mesh_complex() gives back a C3T3 with the same cells per subdomain.
+void test_two_subdomains_simplified() {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Domain = CGAL::Labeled_mesh_domain_3<K>;
+  using Tr2 = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
+  using C3t3_2 = CGAL::Mesh_complex_3_in_triangulation_3<Tr2>;
+  using Criteria = CGAL::Mesh_criteria_3<Tr2>;
+  namespace mp = CGAL::parameters;
+  auto label = [](const K::Point_3& p) {
+    if (p.x() * p.x() + p.y() * p.y() + p.z() * p.z() >= 1) return 0;
+    return p.z() > 0 ? 1 : 2;
+  };
+  const std::function<int(const K::Point_3&)> f = label;
+  const Domain domain(mp::function = f, mp::bounding_object = K::Sphere_3(CGAL::ORIGIN, 4.),
+                      mp::relative_error_bound = 1e-7);
+  const Criteria criteria(mp::facet_angle = 25, mp::facet_size = 0.12, mp::facet_distance = 0.01,
+                          mp::cell_radius_edge_ratio = 3, mp::cell_size = 0.12);
+  CGAL::get_default_random() = CGAL::Random(7);
+  const C3t3_2 c3t3 = CGAL::make_mesh_3<C3t3_2>(domain, criteria, mp::no_perturb(), mp::no_exude());
+  const auto mesh = CGAL::PR_star_octree::c3t3_to_indexed_tetrahedral_mesh(c3t3);
+  const auto res =
+      CGAL::PR_star_octree::simplify(mesh, CGAL::PR_star_octree::parameters::target_fraction(0.5));
+  const auto& out = res.mesh;
+  std::cout << "two subdomains: " << mesh.number_of_tetrahedra() << " -> " << out.number_of_tetrahedra()
+            << " tetrahedra" << std::endl;
+  CHECK(res.statistics.stop == CGAL::PR_star_octree::Simplification_stop::TARGET_REACHED);
+  CHECK_EQUAL(out.tetrahedron_labels.size(), out.tetrahedra.size());
+  // Volumes and boundary areas per label, and the interface's height, by brute force.
+  auto measure = [](const auto& m, double volume[3], double area[3], double& max_abs_z) {
+    std::map<std::array<std::size_t, 3>, std::vector<int>> faces;
+    for (std::size_t t = 0; t < m.tetrahedra.size(); ++t) {
+      const auto& c = m.tetrahedra[t];
+      const int l = m.tetrahedron_labels[t];
+      volume[l] += CGAL::volume(m.points[c[0]], m.points[c[1]], m.points[c[2]], m.points[c[3]]);
+      for (int j = 0; j < 4; ++j) {
+        std::array<std::size_t, 3> f{{c[(j + 1) % 4], c[(j + 2) % 4], c[(j + 3) % 4]}};
+        std::sort(f.begin(), f.end());
+        faces[f].push_back(l);
+      }
+    }
+    max_abs_z = 0;
+    for (const auto& f : faces) {
+      const double a =
+          std::sqrt(CGAL::squared_area(m.points[f.first[0]], m.points[f.first[1]], m.points[f.first[2]]));
+      const std::vector<int>& l = f.second;
+      if (l.size() == 1) area[l[0]] += a;
+      if (l.size() == 2 && l[0] != l[1]) {
+        area[l[0]] += a;
+        area[l[1]] += a;
+        for (std::size_t v : f.first) max_abs_z = std::max(max_abs_z, std::abs(m.points[v].z()));
+      }
+    }
+  };
+  double vin[3] = {0, 0, 0}, ain[3] = {0, 0, 0}, vout[3] = {0, 0, 0}, aout[3] = {0, 0, 0}, zin = 0, zout = 0;
+  measure(mesh, vin, ain, zin);
+  measure(out, vout, aout, zout);
+  const double bound = res.statistics.max_boundary_error;
+  for (int l = 1; l <= 2; ++l) {
+    CHECK(vout[l] > 0);
+    std::cout << "  label " << l << ": volume " << vin[l] << " -> " << vout[l] << " (allowed change "
+              << ain[l] * bound << ")" << std::endl;
+    CHECK(std::abs(vout[l] - vin[l]) <= ain[l] * bound);
+  }
+  CHECK(zout <= zin + 1e-12); // the interface vertices are the input's interface vertices
+  std::cout << "  interface: |z| <= " << zin << " (input), " << zout << " (output)" << std::endl;
+  // Back to a C3T3.
+  C3t3_2 back;
+  CHECK(CGAL::PR_star_octree::build_mesh_complex(out, back));
+  CHECK(back.triangulation()
+            .tds()
+            .is_valid()); // combinatorially (a simplified mesh is no regular triangulation)
+  CHECK_EQUAL(static_cast<std::size_t>(back.number_of_cells_in_complex()), out.number_of_tetrahedra());
+  std::size_t cells[3] = {0, 0, 0}, tets[3] = {0, 0, 0};
+  for (auto c = back.cells_in_complex_begin(); c != back.cells_in_complex_end(); ++c)
+    ++cells[back.subdomain_index(c)];
+  for (int l : out.tetrahedron_labels) ++tets[l];
+  CHECK(cells[1] == tets[1] && cells[2] == tets[2]);
+  CHECK(back.number_of_facets_in_complex() > 0); // boundary and interface as surface patches
+}
+
 int main(int, char**) {
+  test_two_subdomains_simplified();
   // 1. The adapter on Mesh_3 output (~18K and ~10K tetrahedra).
   const C3t3 sphere = prstar::generate_c3t3(options("sphere", 0.1));
   check_adapter(sphere, "sphere", true);

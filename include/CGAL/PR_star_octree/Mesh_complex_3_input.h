@@ -8,11 +8,14 @@
 
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
+#include <CGAL/Mesh_3/tet_soup_to_c3t3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <array>
+#include <map>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -209,6 +212,65 @@ c3t3_to_indexed_tetrahedral_mesh(const C3T3& c3t3) {
     mesh.tetrahedron_labels.push_back(static_cast<int>(input.subdomain_index(t)));
   }
   return mesh;
+}
+
+/// \ingroup PkgPRStarOctreeRef
+/// Builds the mesh complex of an `Indexed_tetrahedral_mesh` (e.g. the result of `simplify()`), the
+/// converse of `to_indexed_tetrahedral_mesh()`: its triangulation holds the points and the
+/// tetrahedra (completed by infinite cells), each cell in the complex with its label as subdomain
+/// index (1 when the mesh has no labels), and the triangles between cells of different labels or
+/// on the boundary in the complex as surface patches `(smaller, larger subdomain index)`, when the
+/// `Surface_patch_index` can be made from such a pair.  Uses %CGAL's
+/// `build_triangulation()` (`CGAL/Mesh_3/tet_soup_to_c3t3.h`).
+///
+/// \pre the tetrahedra are positively oriented (as `simplify()` gives them), no label is 0, and
+/// the boundary of the union of the tetrahedra is a closed surface (a valid mesh)
+/// \returns whether the triangulation could be built (`c3t3` is cleared otherwise)
+template <class C3T3, class Point, class Index>
+bool build_mesh_complex(const Indexed_tetrahedral_mesh<Point, Index>& mesh, C3T3& c3t3) {
+  using Tr = typename C3T3::Triangulation;
+  using Spi = typename Tr::Cell::Surface_patch_index;
+  c3t3.clear();
+  if (mesh.points.empty() || mesh.tetrahedra.empty()) return false;
+  std::vector<typename Tr::Point> points;
+  points.reserve(mesh.points.size());
+  for (const auto& p : mesh.points) points.emplace_back(p.x(), p.y(), p.z());
+  std::vector<std::array<int, 5>> cells;
+  cells.reserve(mesh.tetrahedra.size());
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
+    const auto& c = mesh.tetrahedra[t];
+    const int label = mesh.tetrahedron_labels.empty() ? 1 : mesh.tetrahedron_labels[t];
+    if (label == 0)
+      throw std::invalid_argument("build_mesh_complex: label 0 is the outside of a mesh complex");
+    cells.push_back({{int(c[0]), int(c[1]), int(c[2]), int(c[3]), label}});
+  }
+  std::map<std::array<int, 3>, Spi> patches;
+  if constexpr (std::is_constructible<Spi, std::pair<int, int>>::value) {
+    // Each triangle with its two sides (0: outside); the key as build_triangulation() looks it up.
+    std::map<std::array<int, 3>, std::pair<int, int>> sides;
+    for (const auto& c : cells)
+      for (int j = 0; j < 4; ++j) {
+        std::array<int, 3> f{{c[(j + 1) % 4], c[(j + 2) % 4], c[(j + 3) % 4]}};
+        std::sort(f.begin(), f.end());
+        auto it = sides.emplace(f, std::make_pair(c[4], 0));
+        if (!it.second) it.first->second.second = c[4];
+      }
+    for (const auto& s : sides) {
+      const int a = s.second.first, b = s.second.second;
+      if (a == b) continue;
+      const std::array<int, 3>& f = s.first; // sorted: both circular orders start at the smallest
+      patches[f] = Spi(std::make_pair((std::min)(a, b), (std::max)(a, b)));
+      patches[std::array<int, 3>{{f[0], f[2], f[1]}}] =
+          Spi(std::make_pair((std::min)(a, b), (std::max)(a, b)));
+    }
+  }
+  std::vector<typename Tr::Vertex_handle> handles;
+  if (!CGAL::build_triangulation<Tr, true>(c3t3.triangulation(), points, cells, patches, handles)) {
+    c3t3.clear();
+    return false;
+  }
+  c3t3.rescan_after_load_of_triangulation();
+  return true;
 }
 
 } // namespace PR_star_octree
