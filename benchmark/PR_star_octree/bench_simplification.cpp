@@ -172,75 +172,92 @@ struct Cgal_result {
   double first_edge_length = 0;     // when the length was corrected: the first one tried,
   std::size_t first_tetrahedra = 0; // and the output size it gave
   Output_measures out;
+  char error[200] = {}; // why CGAL could not run (then ok is false)
 };
 
 Cgal_result run_cgal_in_child(const Mesh& mesh, double edge_length, int iterations) {
-  return prstar_bench::in_child<Cgal_result>([&] {
+  Cgal_result r = prstar_bench::in_child<Cgal_result>([&] {
     Cgal_result r;
-    r.edge_length = edge_length;
-    const std::size_t base = prstar_bench::status_kib("VmRSS:");
-    const double t0 = prstar_bench::now();
-    // The soup, positively oriented, with a non-zero subdomain index (the label, or 1).
-    std::vector<Remeshing_tr::Point> points(mesh.points.begin(), mesh.points.end());
-    std::vector<std::array<int, 5>> cells;
-    cells.reserve(mesh.tetrahedra.size());
-    for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
-      const auto& v = mesh.tetrahedra[t];
-      std::array<int, 5> c{{int(v[0]), int(v[1]), int(v[2]), int(v[3]),
-                            mesh.tetrahedron_labels.empty() ? 1 : mesh.tetrahedron_labels[t]}};
-      if (CGAL::orientation(points[v[0]], points[v[1]], points[v[2]], points[v[3]]) == CGAL::NEGATIVE)
-        std::swap(c[2], c[3]);
-      cells.push_back(c);
-    }
-    Remeshing_tr tr;
-    std::vector<Remeshing_tr::Vertex_handle> handles;
-    const std::map<std::array<int, 3>, Remeshing_tr::Cell::Surface_patch_index> no_patches;
-    if (!CGAL::build_triangulation<Remeshing_tr, true>(tr, points, cells, no_patches, handles, false,
-                                                       /* label 0 -> a new label */ true))
-      throw std::runtime_error("CGAL's build_triangulation failed");
-    // Its input must be a valid triangulation of the sphere once the boundary is coned to the infinite
-    // vertex (a boundary of genus 0, connected): checked here, out of the time (CGAL asserts it).
-    const double check_start = prstar_bench::now();
-    const bool valid = tr.tds().is_valid();
-    const double check_seconds = prstar_bench::now() - check_start;
-    if (!valid)
-      throw std::runtime_error("CGAL: the soup coned to the infinite vertex is not a valid Triangulation_3 "
-                               "(a boundary of genus > 0 or of several components?); not remeshed");
-
-    // The input's sharp edges (40 degrees), found by mesh_quality.h, as constraints.
-    namespace I = P::internal::mesh_quality_impl;
-    std::set<Vertex_pair> constrained;
-    for (const auto& e :
-         I::sharp_edges(I::to_epick(mesh.points), I::boundary_triangles(mesh.tetrahedra), 40.)) {
-      Vertex_pair k(handles[e[0] + 1], handles[e[1] + 1]); // handles[0] is the infinite vertex
-      if (k.second < k.first) std::swap(k.first, k.second);
-      constrained.insert(k);
-    }
-    r.constrained_edges = constrained.size();
-    const double t1 = prstar_bench::now();
-    r.seconds_build = t1 - t0 - check_seconds;
-    CGAL::tetrahedral_isotropic_remeshing(tr, edge_length,
-                                          CGAL::parameters::number_of_iterations(iterations)
-                                              .edge_is_constrained_map(Constrained_edges{&constrained}));
-    r.seconds_remesh = prstar_bench::now() - t1;
-    r.run_peak_rss_bytes = (prstar_bench::status_kib("VmHWM:") - base) * 1024;
-    // The cells of the domain (non-zero subdomain index) as index arrays.
-    std::vector<Kernel::Point_3> out_points;
-    std::unordered_map<Remeshing_tr::Vertex_handle, std::uint32_t> index;
-    std::vector<std::array<std::uint32_t, 4>> out_tets;
-    for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
-      if (c->subdomain_index() == Remeshing_tr::Cell::Subdomain_index()) continue;
-      std::array<std::uint32_t, 4> t;
-      for (int i = 0; i < 4; ++i) {
-        const auto it = index.emplace(c->vertex(i), std::uint32_t(out_points.size()));
-        if (it.second) out_points.push_back(c->vertex(i)->point());
-        t[i] = it.first->second;
+    try {
+      r.edge_length = edge_length;
+      const std::size_t base = prstar_bench::status_kib("VmRSS:");
+      const double t0 = prstar_bench::now();
+      // The soup, positively oriented, with a non-zero subdomain index (the label, or 1), on the
+      // vertices of the tetrahedra only (an unreferenced vertex would be an isolated vertex of the TDS).
+      std::vector<int> renumber(mesh.points.size(), -1);
+      std::vector<Remeshing_tr::Point> points;
+      std::vector<std::array<int, 5>> cells;
+      cells.reserve(mesh.tetrahedra.size());
+      for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
+        std::array<int, 5> c;
+        for (int i = 0; i < 4; ++i) {
+          int& v = renumber[mesh.tetrahedra[t][i]];
+          if (v < 0) {
+            v = int(points.size());
+            points.push_back(mesh.points[mesh.tetrahedra[t][i]]);
+          }
+          c[i] = v;
+        }
+        c[4] = mesh.tetrahedron_labels.empty() ? 1 : mesh.tetrahedron_labels[t];
+        if (CGAL::orientation(points[c[0]], points[c[1]], points[c[2]], points[c[3]]) == CGAL::NEGATIVE)
+          std::swap(c[2], c[3]);
+        cells.push_back(c);
       }
-      out_tets.push_back(t);
+      Remeshing_tr tr;
+      std::vector<Remeshing_tr::Vertex_handle> handles;
+      const std::map<std::array<int, 3>, Remeshing_tr::Cell::Surface_patch_index> no_patches;
+      if (!CGAL::build_triangulation<Remeshing_tr, true>(tr, points, cells, no_patches, handles, false,
+                                                         /* label 0 -> a new label */ true))
+        throw std::runtime_error("CGAL's build_triangulation failed");
+      // Its input must be a valid triangulation of the sphere once the boundary is coned to the infinite
+      // vertex (a boundary of genus 0, connected): checked here, out of the time (CGAL asserts it).
+      const double check_start = prstar_bench::now();
+      const bool valid = tr.tds().is_valid();
+      const double check_seconds = prstar_bench::now() - check_start;
+      if (!valid)
+        throw std::runtime_error("CGAL: the soup coned to the infinite vertex is not a valid Triangulation_3 "
+                                 "(a boundary of genus > 0 or of several components?); not remeshed");
+
+      // The input's sharp edges (40 degrees), found by mesh_quality.h, as constraints.
+      namespace I = P::internal::mesh_quality_impl;
+      std::set<Vertex_pair> constrained;
+      for (const auto& e :
+           I::sharp_edges(I::to_epick(mesh.points), I::boundary_triangles(mesh.tetrahedra), 40.)) {
+        // handles[0] is the infinite vertex
+        Vertex_pair k(handles[std::size_t(renumber[e[0]]) + 1], handles[std::size_t(renumber[e[1]]) + 1]);
+        if (k.second < k.first) std::swap(k.first, k.second);
+        constrained.insert(k);
+      }
+      r.constrained_edges = constrained.size();
+      const double t1 = prstar_bench::now();
+      r.seconds_build = t1 - t0 - check_seconds;
+      CGAL::tetrahedral_isotropic_remeshing(tr, edge_length,
+                                            CGAL::parameters::number_of_iterations(iterations)
+                                                .edge_is_constrained_map(Constrained_edges{&constrained}));
+      r.seconds_remesh = prstar_bench::now() - t1;
+      r.run_peak_rss_bytes = (prstar_bench::status_kib("VmHWM:") - base) * 1024;
+      // The cells of the domain (non-zero subdomain index) as index arrays.
+      std::vector<Kernel::Point_3> out_points;
+      std::unordered_map<Remeshing_tr::Vertex_handle, std::uint32_t> index;
+      std::vector<std::array<std::uint32_t, 4>> out_tets;
+      for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
+        if (c->subdomain_index() == Remeshing_tr::Cell::Subdomain_index()) continue;
+        std::array<std::uint32_t, 4> t;
+        for (int i = 0; i < 4; ++i) {
+          const auto it = index.emplace(c->vertex(i), std::uint32_t(out_points.size()));
+          if (it.second) out_points.push_back(c->vertex(i)->point());
+          t[i] = it.first->second;
+        }
+        out_tets.push_back(t);
+      }
+      r.out = measure(mesh, out_points, out_tets);
+    } catch (const std::exception& e) {
+      std::strncpy(r.error, e.what(), sizeof r.error - 1);
     }
-    r.out = measure(mesh, out_points, out_tets);
     return r;
   });
+  if (r.error[0]) r.ok = false;
+  return r;
 }
 
 // The mean length of the edges of the mesh (each edge once).
@@ -402,7 +419,9 @@ int main(int argc, char** argv) {
                                        : std::string("failed"))
                   << '\n';
       }
-      if (cgal) {
+      if (cgal && t > 0 && !cgal_results[0].ok) // a mesh CGAL cannot take is tried once
+        cgal_results[t] = cgal_results[0];
+      else if (cgal) {
         // About the output size of the global PR-star run.
         const double n_out = results[0][t].ok && results[0][t].output_tetrahedra
                                  ? double(results[0][t].output_tetrahedra)
@@ -418,6 +437,7 @@ int main(int argc, char** argv) {
                     << '\n';
         };
         report(cgal_results[t]);
+        if (cgal_results[t].error[0]) std::cerr << "  " << cgal_results[t].error << '\n';
         // Off by more than 15%: once more, with the length corrected by the size ratio.
         const Cgal_result first = cgal_results[t];
         if (first.ok && std::abs(double(first.out.tetrahedra) / n_out - 1) > 0.15) {
@@ -521,7 +541,7 @@ int main(int argc, char** argv) {
                    << o.boundary_out_in << ',' << o.sharp_in_out << ',' << o.sharp_out_in << ',' << o.sharp_in
                    << ',' << o.sharp_out << '\n';
         } else
-          std::cout << "| CGAL remeshing | failed ||||||||||||\n";
+          std::cout << "| CGAL remeshing | " << (c.error[0] ? c.error : "failed") << " ||||||||||||\n";
       }
       std::cout << '\n';
     }
