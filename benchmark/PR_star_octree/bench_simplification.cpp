@@ -346,6 +346,8 @@ int main(int argc, char** argv) {
         for (const std::string& t : split(v)) targets.push_back(std::stod(t));
       } else if (a == "--reps")
         reps = std::max(1, std::stoi(v));
+      else if (a == "--cgal-iterations")
+        cgal_iterations = std::max(1, std::stoi(v));
       else
         csv_file = v;
     } else if (!a.empty() && a[0] == '-') {
