@@ -162,6 +162,9 @@ private:
     covered_.assign(points.size(), {});
     surface_.clear();
     tree_of_surface_.clear();
+    max_normal_cosine_ = options_.feature_angle < 180
+                             ? std::cos(options_.feature_angle / 2 * 3.14159265358979323846 / 180)
+                             : -1.;
     if (!(options_.max_boundary_error < std::numeric_limits<double>::infinity())) return;
     auto p = [&](Index v) { return K::Point_3(input_pos_[v][0], input_pos_[v][1], input_pos_[v][2]); };
     surface_.reserve(constraints_.triangles.size());
@@ -605,7 +608,7 @@ private:
     }
 
     // Error bound of the surface.
-    if ((dr <= 2 || (move && dimension(k) <= 2)) && !error_ok(r, k, move, p, renamed)) return Refusal::ERROR;
+    if ((dr <= 2 || (move && dimension(k) <= 2)) && !error_ok(r, k, move, p)) return Refusal::ERROR;
 
     apply(r, k, move, p, pk, st_r, st_k);
     return Refusal::NONE;
@@ -661,9 +664,14 @@ private:
   }
 
   // Every input surface point that r and k stand for stays within the bound of the new surface
-  // around k, and the new surface triangles stay within the bound of the input surface.
-  bool error_ok(Index r, Index k, bool move, const Vec3& p, std::size_t renamed) {
-    const double tol = options_.max_boundary_error;
+  // around k, and the new surface triangles stay within the bound of the input surface.  Both are
+  // checked on samples (the input vertices; seven points per new triangle), against a margin of
+  // `error_margin` times the bound, so that what the samples miss, and the points of other
+  // vertices whose nearest triangle changes, stay within the bound (measured: `mesh_quality.h`).
+  static constexpr double error_margin = 0.7;
+
+  bool error_ok(Index r, Index k, bool move, const Vec3& p) {
+    const double tol = error_margin * options_.max_boundary_error;
     if (!(tol < std::numeric_limits<double>::infinity())) return true;
     surface_link(new_cells_, new_labels_, k, link_k_);
     const Vec3& pk = move ? p : posd_[k];
@@ -684,15 +692,52 @@ private:
       if (!near_new_surface(s)) return false;
     for (std::size_t s : covered_[sid_[k]])
       if (!near_new_surface(s)) return false;
-    // The other way: points of the new triangles (those around k that changed).
-    (void)renamed;
+    // The other way: the new triangles around k, at their centroid, edge midpoints and the
+    // midpoints between the centroid and the corners.
     for (const K::Triangle_3& tri : triangles_) {
       const K::Point_3 c = CGAL::centroid(tri);
-      if (tree_of_surface_.squared_distance(c) > tol2) return false;
+      const auto closest = tree_of_surface_.closest_point_and_primitive(c);
+      if (CGAL::squared_distance(c, closest.first) > tol2) return false;
+      // No new crease: the triangle's normal within half the feature angle of the input
+      // surface's normal there.
+      if (max_normal_cosine_ > -1) {
+        const K::Vector_3 n1 = CGAL::normal(tri[0], tri[1], tri[2]);
+        const K::Vector_3 n2 = CGAL::normal((*closest.second)[0], (*closest.second)[1], (*closest.second)[2]);
+        const double l = std::sqrt(n1.squared_length() * n2.squared_length());
+        if (!(std::abs(n1 * n2) >= max_normal_cosine_ * l)) return false;
+      }
       for (int i = 0; i < 3; ++i)
-        if (tree_of_surface_.squared_distance(CGAL::midpoint(tri[i], tri[(i + 1) % 3])) > tol2) return false;
+        if (tree_of_surface_.squared_distance(CGAL::midpoint(tri[i], tri[(i + 1) % 3])) > tol2 ||
+            tree_of_surface_.squared_distance(CGAL::midpoint(tri[i], c)) > tol2)
+          return false;
     }
     if (move && tree_of_surface_.squared_distance(kpoint(p)) > tol2) return false;
+    return dimension(r) > 1 || curve_error_ok(r, k);
+  }
+
+  // The input feature vertices r and k stand for stay within a quarter of the bound of the
+  // feature edges at k after the collapse.
+  bool curve_error_ok(Index r, Index k) {
+    const double tol = 0.25 * error_margin * options_.max_boundary_error;
+    segments_.clear();
+    neighbors(r, nbr_);
+    for (Index w : nbr_)
+      if (w != k && is_feature(r, w)) segments_.emplace_back(kpoint(posd_[k]), kpoint(posd_[w]));
+    neighbors(k, nbr_);
+    for (Index w : nbr_)
+      if (w != r && is_feature(k, w)) segments_.emplace_back(kpoint(posd_[k]), kpoint(posd_[w]));
+    auto near_curve = [&](std::size_t s) {
+      if (constraints_.dimension[s] > 1) return true; // a surface point: checked above
+      const K::Point_3 q = kpoint(input_pos_[s]);
+      for (const K::Segment_3& e : segments_)
+        if (CGAL::squared_distance(q, e) <= tol * tol) return true;
+      return false;
+    };
+    if (!near_curve(sid_[r])) return false;
+    for (std::size_t s : covered_[sid_[r]])
+      if (!near_curve(s)) return false;
+    for (std::size_t s : covered_[sid_[k]])
+      if (!near_curve(s)) return false;
     return true;
   }
 
@@ -760,6 +805,7 @@ private:
   std::vector<std::vector<std::size_t>> covered_; // the input surface points a vertex stands for
   Triangle_list surface_;
   AABB_tree tree_of_surface_;
+  double max_normal_cosine_ = -1; // cosine of half the feature angle (-1: no bound)
   // the round
   const Octree* tree_ = nullptr;
   std::vector<Vertex_type> types_;
@@ -778,6 +824,7 @@ private:
   std::vector<Face_record> faces_;
   std::vector<std::pair<Index, Index>> link_r_, link_k_;
   Triangle_list triangles_;
+  std::vector<K::Segment_3> segments_;
   Edge_fan<Index> fan_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
   Collapse_tester<GeomTraits, Index> tester_;
