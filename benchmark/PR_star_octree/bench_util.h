@@ -80,6 +80,10 @@ Result in_child(Job&& job) {
   close(fd[0]);
   int status = 0;
   waitpid(pid, &status, 0);
+  if (WIFSIGNALED(status)) {
+    std::cerr << "  failed: the child was killed by signal " << WTERMSIG(status) << '\n';
+    r.ok = false;
+  }
   return r;
 }
 
