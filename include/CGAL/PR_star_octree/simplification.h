@@ -72,7 +72,9 @@ struct Edge_length_priority {
 
 /// \ingroup PkgPRStarOctreeRef
 ///
-/// Simplifies a tetrahedral mesh by half-edge collapses on a PR-star octree (paper Section 9).
+/// Simplifies a tetrahedral mesh by edge collapses on a PR-star octree (paper Section 9), keeping
+/// its sharp features, label interfaces, a quality floor and an error bound (see the user manual,
+/// Section Simplification).
 ///
 /// Each round builds the PR-star octree of the current mesh with bucket threshold `bucket_size` and
 /// visits its leaves in depth-first order.  A leaf queues the edges whose two ends it indexes and
@@ -106,6 +108,19 @@ struct Edge_length_priority {
 ///   `PR_star_octree_3<>::infinite_bucket_size` gives the global algorithm (one leaf, one queue)
 /// - `max_rounds(std::size_t)`: an upper bound on the number of rounds (default 1000)
 /// - `priority(F)`: the collapse priority (default `Edge_length_priority`)
+/// - `quality_measure(Quality_measure)` and `quality_floor(double)`: no collapse creates a
+///   tetrahedron under the floor unless it replaces a worse one (default: smallest dihedral angle,
+///   5 degrees; radius ratio: 0.1; floor 0: none)
+/// - `feature_angle(double)`: surface edges deviating from flat by more than this (degrees,
+///   default 40; 180: none) are sharp features; their vertices only slide along them, corners
+///   never move; the triangles between tetrahedra of different labels are kept as surfaces too
+/// - `max_boundary_error(double)`: the bound on the distance between the input surface and the
+///   simplified one (default 0.2% of the bounding-box diagonal; infinity: none)
+/// - `collapse_priority(Collapse_priority)`, `collapse_placement(Collapse_placement)`: shortest
+///   edge or smallest quadric error first; half-edge collapses or the optimal point of the edge
+/// - `vertex_is_constrained_map(m)`, `edge_is_constrained_map(m)`: property maps from an input
+///   vertex index (`std::size_t`), or a pair of them (smaller first), to `bool`: the user's corners
+///   and feature edges
 /// - `geom_traits(gt)`: a model of `PRStarOctreeTraits` (default
 ///   `Exact_predicates_inexact_constructions_kernel`); the output points are its `Point_3`
 ///
