@@ -77,19 +77,21 @@ struct Edge_length_priority {
 /// Section Simplification).
 ///
 /// Each round builds the PR-star octree of the current mesh with bucket threshold `bucket_size` and
-/// visits its leaves in depth-first order.  A leaf queues the edges whose two ends it indexes and
-/// that are shorter than the round's threshold, by `priority` (shortest first by default), and
-/// collapses them one by one: the edge `e = (v1, v2)`, `v1 < v2`, is collapsed into `v1` (`v2` is
-/// removed, `v1` does not move and keeps its scalar value) when
-/// - *boundary condition*: both ends are interior, or both are on the boundary and `e` is a
-///   boundary edge (a non-manifold end is never collapsed);
-/// - *geometric condition*: no tetrahedron of `St(v2) - St(e)` flips or becomes flat when `v2`
-///   moves to `v1`, decided with the traits' exact `Orientation_3`;
+/// visits its leaves in depth-first order.  A leaf queues the edges with an end in it that are
+/// shorter than the round's threshold, by `priority` (shortest first by default), and collapses
+/// them one by one: an end `v2` in the leaf is removed into the other end `v1` (which stays where it
+/// is, or moves to the optimal point of the edge with the optimal placement) when
+/// - *strata*: `v2` is not a corner, `v1` is of the stratum of `v2` or a lower one (interior,
+///   surface, feature curve, corner), and a feature vertex moves along a feature edge, a surface
+///   vertex along a surface edge (a non-manifold end is a corner);
+/// - *geometric condition*: no new tetrahedron flips or becomes flat, decided with the traits'
+///   exact `Orientation_3`;
 /// - *link condition*: `Lk(v1) ∩ Lk(v2) = Lk(e)` as simplicial complexes (vertices, edges,
 ///   triangles), the boundary being coned to a dummy vertex so that the boundary surface keeps its
-///   topology too.
+///   topology too; and the same on the surface and on the feature curves;
+/// - *quality floor* and *error bound* (see the named parameters below and the user manual).
 /// Then the mesh is compacted and the octree rebuilt.  Rounds go on while one removes a tetrahedron
-/// and the target is not met.
+/// and the target is not met; `Simplification_statistics::stop` says why they stopped.
 ///
 /// The round's threshold is `max_edge_length`; with a target fraction it is also bounded by
 /// the `q`-quantile of the current edge lengths (sampled), `q` being the fraction of the current
