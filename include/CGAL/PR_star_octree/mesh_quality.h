@@ -42,20 +42,9 @@ namespace PR_star_octree {
 /// The companion of `min_dihedral_angle()`, with the same formula.
 template <class Point_3>
 double max_dihedral_angle(const Point_3& p, const Point_3& q, const Point_3& r, const Point_3& s) {
-  using namespace internal;
-  const Point_3* v[4] = {&p, &q, &r, &s};
-  constexpr int edges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
-                               {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
-  double best = 0;
-  for (const auto& e : edges) {
-    const Vec3 a = minus(*v[e[1]], *v[e[0]]);
-    const Vec3 u = minus(*v[e[2]], *v[e[0]]);
-    const Vec3 w = minus(*v[e[3]], *v[e[0]]);
-    const double det = std::abs(dot(a, cross(u, w)));
-    const double c = dot(a, a) * dot(u, w) - dot(a, u) * dot(a, w);
-    best = (std::max)(best, std::atan2(norm(a) * det, c) * (180. / 3.14159265358979323846));
-  }
-  return best;
+  using internal::to_vec3;
+  const auto angles = internal::dihedral_angles(to_vec3(p), to_vec3(q), to_vec3(r), to_vec3(s));
+  return *std::max_element(angles.begin(), angles.end());
 }
 
 /// \ingroup PkgPRStarOctreeRef
@@ -172,10 +161,7 @@ std::vector<std::array<std::size_t, 3>> boundary_triangles(const Tetrahedra& tet
 // The angle between the two half-planes bounded by the line (a, b) that contain c and d, in
 // degrees: 180 where the surface (a, b, c) + (a, b, d) is flat, small where it folds sharply.
 inline double wing_angle(const P3& a, const P3& b, const P3& c, const P3& d) {
-  const Vec3 e = minus(b, a), u = minus(c, a), w = minus(d, a);
-  const double det = std::abs(dot(e, cross(u, w)));
-  const double cs = dot(e, e) * dot(u, w) - dot(e, u) * dot(e, w);
-  return std::atan2(norm(e) * det, cs) * (180. / 3.14159265358979323846);
+  return internal::wing_angle(to_vec3(a), to_vec3(b), to_vec3(c), to_vec3(d));
 }
 
 // The sharp edges of a boundary surface: edges of exactly two boundary triangles whose surface

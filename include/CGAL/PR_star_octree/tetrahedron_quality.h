@@ -53,24 +53,27 @@ inline double norm(const Vec3& a) {
   return std::sqrt(dot(a, a));
 }
 
+// The angle between the two half-planes bounded by the line (a, b) that contain c and d, in
+// degrees: the dihedral angle of the tetrahedron (a, b, c, d) at its edge (a, b); 180 where the
+// surface (a, b, c) + (a, b, d) is flat.  With e = b - a, u = c - a, w = d - a, the normals e x u
+// and e x w make the angle atan2(|e| |det(e, u, w)|, (e.e)(u.w) - (e.u)(e.w)).
+inline double wing_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const Vec3 e = minus(b, a), u = minus(c, a), w = minus(d, a);
+  const double det = std::abs(dot(e, cross(u, w)));
+  const double cs = dot(e, e) * dot(u, w) - dot(e, u) * dot(e, w);
+  return std::atan2(norm(e) * det, cs) * (180. / 3.14159265358979323846);
+}
+
+// The six dihedral angles of the tetrahedron (p, q, r, s), in degrees.
+inline std::array<double, 6> dihedral_angles(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s) {
+  return {{wing_angle(p, q, r, s), wing_angle(p, r, q, s), wing_angle(p, s, q, r), wing_angle(q, r, p, s),
+           wing_angle(q, s, p, r), wing_angle(r, s, p, q)}};
+}
+
 // The measures on double coordinates (the public functions below convert their points).
 inline double min_dihedral_angle(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s) {
-  const Vec3* v[4] = {&p, &q, &r, &s};
-  constexpr int edges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
-                               {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
-  double best = 180;
-  for (const auto& e : edges) {
-    // At edge (i, j), between the faces (i, j, k) and (i, j, l): with a = j - i, u = k - i,
-    // w = l - i, the normals a x u and a x w make the angle
-    // atan2(|a| |det(a, u, w)|, (a.a)(u.w) - (a.u)(a.w)).
-    const Vec3 a = minus(*v[e[1]], *v[e[0]]);
-    const Vec3 u = minus(*v[e[2]], *v[e[0]]);
-    const Vec3 w = minus(*v[e[3]], *v[e[0]]);
-    const double det = std::abs(dot(a, cross(u, w)));
-    const double c = dot(a, a) * dot(u, w) - dot(a, u) * dot(a, w);
-    best = (std::min)(best, std::atan2(norm(a) * det, c) * (180. / 3.14159265358979323846));
-  }
-  return best;
+  const auto angles = dihedral_angles(p, q, r, s);
+  return *std::min_element(angles.begin(), angles.end());
 }
 
 inline double radius_ratio(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s) {

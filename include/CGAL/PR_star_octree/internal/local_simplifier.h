@@ -680,18 +680,12 @@ private:
       triangles_.emplace_back(kpoint(pk), kpoint(posd_[e.first]), kpoint(posd_[e.second]));
     if (triangles_.empty()) return true; // no surface left around k: nothing to compare
     const double tol2 = tol * tol;
-    auto near_new_surface = [&](std::size_t s) {
-      const K::Point_3 q = kpoint(input_pos_[s]);
-      for (const K::Triangle_3& tri : triangles_)
-        if (CGAL::squared_distance(q, tri) <= tol2) return true;
-      return false;
-    };
-    if (dimension(r) <= 2 && !near_new_surface(sid_[r])) return false;
-    if (move && !near_new_surface(sid_[k])) return false;
+    if (dimension(r) <= 2 && !near_triangles(sid_[r], tol2)) return false;
+    if (move && !near_triangles(sid_[k], tol2)) return false;
     for (std::size_t s : covered_[sid_[r]])
-      if (!near_new_surface(s)) return false;
+      if (!near_triangles(s, tol2)) return false;
     for (std::size_t s : covered_[sid_[k]])
-      if (!near_new_surface(s)) return false;
+      if (!near_triangles(s, tol2)) return false;
     // The other way: the new triangles around k, at their centroid, edge midpoints and the
     // midpoints between the centroid and the corners.
     for (const K::Triangle_3& tri : triangles_) {
@@ -714,6 +708,14 @@ private:
     if (move && tree_of_surface_.squared_distance(kpoint(p)) > tol2) return false;
     if (!neighbours_error_ok(r, k, move, p, tol2)) return false;
     return dimension(r) > 1 || curve_error_ok(r, k);
+  }
+
+  // The input surface point of stable id `s` is within sqrt(tol2) of one of `triangles_`.
+  bool near_triangles(std::size_t s, double tol2) const {
+    const K::Point_3 q = kpoint(input_pos_[s]);
+    for (const K::Triangle_3& tri : triangles_)
+      if (CGAL::squared_distance(q, tri) <= tol2) return true;
+    return false;
   }
 
   // The points of the surface neighbours w of r (and of k when it moves), whose own fans change,
@@ -745,16 +747,8 @@ private:
       triangles_.clear();
       auto at = [&](Index x) { return kpoint(x == k && move ? p : posd_[x]); };
       for (const auto& e : link_k_) triangles_.emplace_back(at(w), at(e.first), at(e.second));
-      for (std::size_t s : covered_[sid_[w]]) {
-        const K::Point_3 q = kpoint(input_pos_[s]);
-        bool near = false;
-        for (const K::Triangle_3& tri : triangles_)
-          if (CGAL::squared_distance(q, tri) <= tol2) {
-            near = true;
-            break;
-          }
-        if (!near) return false;
-      }
+      for (std::size_t s : covered_[sid_[w]])
+        if (!near_triangles(s, tol2)) return false;
     }
     return true;
   }

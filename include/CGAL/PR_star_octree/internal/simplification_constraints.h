@@ -157,8 +157,6 @@ void compute_surface_constraints(const std::vector<Vec3>& points, const std::vec
   std::sort(edges.begin(), edges.end(), [](const Edge_record& x, const Edge_record& y) {
     return std::tie(x.a, x.b, x.tri) < std::tie(y.a, y.b, y.tri);
   });
-  const double pi = 3.14159265358979323846;
-  const double max_deviation = feature_angle * pi / 180;
   auto third = [&](Index tri, Index a, Index b) {
     for (Index w : out.triangles[tri])
       if (w != a && w != b) return w;
@@ -174,14 +172,11 @@ void compute_surface_constraints(const std::vector<Vec3>& points, const std::vec
           add_feature(a, b);
           return;
         }
-        if (!(max_deviation < pi)) return; // no sharp edges
-        // The angle between the half-planes (a, b, c) and (a, b, d): pi on a flat surface.
-        const Vec3 e = minus(points[b], points[a]);
-        const Vec3 u = minus(points[third(first->tri, a, b)], points[a]);
-        const Vec3 w = minus(points[third((first + 1)->tri, a, b)], points[a]);
-        const double angle = std::atan2(norm(e) * std::abs(dot(e, cross(u, w))),
-                                        dot(e, e) * dot(u, w) - dot(e, u) * dot(e, w));
-        if (pi - angle > max_deviation) add_feature(a, b);
+        if (!(feature_angle < 180)) return; // no sharp edges
+        // The angle between the half-planes (a, b, c) and (a, b, d): 180 degrees on a flat surface.
+        const double angle = wing_angle(points[a], points[b], points[third(first->tri, a, b)],
+                                        points[third((first + 1)->tri, a, b)]);
+        if (180 - angle > feature_angle) add_feature(a, b);
       });
 
   // Strata.
