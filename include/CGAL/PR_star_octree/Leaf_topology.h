@@ -35,8 +35,33 @@ enum Relations : unsigned {
   VERTEX_VERTICES = 4u,       ///< VV: the vertices adjacent to each vertex of the leaf
   EDGES = 8u,                 ///< the edges with a vertex in the leaf, their stars in cyclic order, VE
   TRIANGLES = 16u,            ///< the triangles with a vertex in the leaf and their incident tetrahedra
-  ALL_RELATIONS = 31u
+  /// the kind of the link of every vertex of the leaf (`Vertex_type`: empty, sphere, disc, neither),
+  /// gathered for the whole leaf in one pass over its tetrahedra (`Leaf_topology::vertex_type()`)
+  VERTEX_LINKS = 32u,
+  /// the leaf's tetrahedra in dense local vertex ids (`Leaf_topology::local_tetrahedron()`): the
+  /// leaf's own vertices first, then the other vertices of its tetrahedra
+  LOCAL_TETRAHEDRA = 64u,
+  ALL_RELATIONS = 127u,
+  /// not a relation but a modifier of `VERTEX_LINKS`: only the paper's Euler count on each link
+  /// (`2|e| = 3|t|`), without checking that it is a sphere or a disc (faster, trusts the mesh to be
+  /// manifold; a link edge in three or more link triangles is still reported `NONMANIFOLD`)
+  UNCHECKED_LINKS = 128u
 };
+
+/// \ingroup PkgPRStarOctreeRef
+/// What the link of a vertex is.
+enum class Vertex_type : unsigned char {
+  UNREFERENCED = 0, ///< in no tetrahedron
+  INTERIOR = 1,     ///< link is a triangulated sphere
+  BOUNDARY = 2,     ///< link is a triangulated disc
+  NONMANIFOLD = 3   ///< link is neither (pinched vertex, non-manifold edge or face, several sheets)
+};
+
+static_assert(static_cast<int>(Vertex_type::UNREFERENCED) == static_cast<int>(internal::Link_kind::EMPTY) &&
+                  static_cast<int>(Vertex_type::INTERIOR) == static_cast<int>(internal::Link_kind::CLOSED) &&
+                  static_cast<int>(Vertex_type::BOUNDARY) == static_cast<int>(internal::Link_kind::OPEN) &&
+                  static_cast<int>(Vertex_type::NONMANIFOLD) == static_cast<int>(internal::Link_kind::OTHER),
+              "Vertex_type and internal::Link_kind must have the same values");
 
 /// \ingroup PkgPRStarOctreeRef
 ///
@@ -140,6 +165,22 @@ public:
   Index_range triangle_tetrahedra(std::size_t f) const { return csr(ft_offsets_, ft_, f); }
   /// @}
 
+  /// \name Vertex links (`VERTEX_LINKS`) and local ids (`LOCAL_TETRAHEDRA`)
+  /// @{
+  /// the kind of the link of vertex `v` of the leaf (`VERTEX_LINKS` must have been built; checked
+  /// to be a sphere or a disc unless `UNCHECKED_LINKS` was given)
+  Vertex_type vertex_type(Index v) const { return static_cast<Vertex_type>(links_.kind(v - vb_)); }
+  /// the number of local vertex ids: `[0, vertex_end() - vertex_begin())` are the leaf's vertices
+  /// in order, the others are the other vertices of the leaf's tetrahedra (`VERTEX_LINKS` or
+  /// `LOCAL_TETRAHEDRA` must have been built)
+  std::size_t number_of_local_vertices() const { return links_.number_of_ids(); }
+  /// the vertex (octree numbering) of local id `j`
+  Index local_vertex(std::size_t j) const { return links_.vertex(j); }
+  /// local tetrahedron `i` (`tetrahedra()[i]`) in local vertex ids, its vertices in the same order as
+  /// in the octree (`LOCAL_TETRAHEDRA` must have been built)
+  const std::array<std::uint32_t, 4>& local_tetrahedron(std::size_t i) const { return links_.tetrahedron(i); }
+  /// @}
+
   /// \name Links (computed on demand from VT)
   /// @{
   /// the link of vertex `v` of the leaf: the face `(a, b, c)` opposite `v` in each tetrahedron of
@@ -163,7 +204,8 @@ public:
     };
     return b(vt_offsets_) + b(vt_) + b(tt_) + b(vv_offsets_) + b(vv_) + b(edges_) + b(edge_flags_) +
            b(et_offsets_) + b(et_) + b(el_offsets_) + b(el_) + b(vedge_offsets_) + b(vedge_) + b(triangles_) +
-           b(ft_offsets_) + b(ft_) + faces_.capacity_bytes() + b(edge_records_) + b(scratch_) + b(star_);
+           b(ft_offsets_) + b(ft_) + faces_.capacity_bytes() + b(edge_records_) + b(scratch_) + b(star_) +
+           links_.memory_bytes();
   }
 
 private:
@@ -199,13 +241,13 @@ private:
   internal::Edge_fan<Index> fan_;
   std::vector<Edge_record> edge_records_;
   std::vector<Index> scratch_, star_;
+  internal::Leaf_links<Index> links_;
 };
 
 } // namespace PR_star_octree
 } // namespace CGAL
 
 #include <CGAL/PR_star_octree/internal/Leaf_topology_impl.h>
-#include <CGAL/PR_star_octree/internal/parallel_leaves.h>
 
 namespace CGAL {
 namespace PR_star_octree {
@@ -213,30 +255,6 @@ namespace PR_star_octree {
 // ---------------------------------------------------------------------------------------------
 // Streaming and random access
 // ---------------------------------------------------------------------------------------------
-
-/// \ingroup PkgPRStarOctreeRef
-/// Streams over the leaves of `tree` in depth-first order: for each leaf, builds the local
-/// relations `relations` (a combination of `Relations`), calls `f(const Leaf_topology<Octree>&)`,
-/// and discards them (the buffers are reused for the next leaf).
-///
-/// \param tree the octree
-/// \param relations the relations to build (a combination of `Relations`)
-/// \param f called with each leaf's `Leaf_topology`
-/// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf.
-template <class GT, class I, class Function, class NP = parameters::Default_named_parameters>
-void for_each_leaf(const PR_star_octree_3<GT, I>& tree, unsigned relations, Function&& f,
-                   const NP& np = parameters::default_values()) {
-  using Octree = PR_star_octree_3<GT, I>;
-  const internal::Progress_reporter<NP> progress(np);
-  Leaf_topology<Octree> local;
-  const std::size_t total = tree.number_of_leaves();
-  std::size_t done = 0;
-  for (typename Octree::Node_index leaf : tree.leaves()) {
-    local.build(tree, leaf, relations);
-    f(static_cast<const Leaf_topology<Octree>&>(local));
-    progress(++done, total);
-  }
-}
 
 /// \ingroup PkgPRStarOctreeRef
 /// The star of vertex `v` (VT), by random access: finds the leaf of `v` and scans its list.
@@ -295,51 +313,10 @@ struct Simplex_counts {
   }
 };
 
-/// \ingroup PkgPRStarOctreeRef
-/// Counts vertices, edges, triangles (and boundary triangles) and tetrahedra by streaming over the
-/// leaves: each simplex is counted by the leaf owning its smallest vertex.
-/// \param tree the octree
-/// \param np optional named parameters: `progress(F)` (see `for_each_leaf()`).
-/// \tparam ConcurrencyTag `CGAL::Parallel_tag`, `CGAL::Sequential_tag` or the default
-///         `CGAL::Parallel_if_available_tag` (the same counts either way)
-template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, class I,
-          class NP = parameters::Default_named_parameters>
-Simplex_counts count_simplices(const PR_star_octree_3<GT, I>& tree,
-                               const NP& np = parameters::default_values()) {
-  using Octree = PR_star_octree_3<GT, I>;
-  // One slot per leaf (vertices, edges, triangles, boundary and non-manifold triangles), summed in
-  // leaf order.
-  std::vector<std::array<std::size_t, 5>> per_leaf(tree.number_of_leaves());
-  internal::process_leaves<ConcurrencyTag>(
-      tree, VERTEX_TETRAHEDRA | EDGES | TRIANGLES, 0,
-      [&](int, const Leaf_topology<Octree>& local, std::size_t leaf) {
-        std::array<std::size_t, 5> c{{0, 0, 0, 0, 0}};
-        for (auto v = local.vertex_begin(); v < local.vertex_end(); ++v)
-          if (!local.vertex_tetrahedra(v).empty()) ++c[0];
-        for (std::size_t e = 0; e < local.number_of_edges(); ++e) c[1] += local.owns_edge(e);
-        for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
-          if (!local.owns_triangle(f)) continue;
-          ++c[2];
-          const std::size_t n = local.triangle_tetrahedra(f).size();
-          c[3] += (n == 1);
-          c[4] += (n > 2);
-        }
-        per_leaf[leaf] = c;
-      },
-      internal::Progress_reporter<NP>(np));
-  Simplex_counts s;
-  s.tetrahedra = tree.number_of_tetrahedra();
-  for (const auto& c : per_leaf) {
-    s.vertices += c[0];
-    s.edges += c[1];
-    s.triangles += c[2];
-    s.boundary_triangles += c[3];
-    s.nonmanifold_triangles += c[4];
-  }
-  return s;
-}
-
 } // namespace PR_star_octree
 } // namespace CGAL
+
+// The leaf executor, `for_each_leaf()` and `count_simplices()`.
+#include <CGAL/PR_star_octree/Leaf_executor.h>
 
 #endif // CGAL_PR_STAR_OCTREE_LEAF_TOPOLOGY_H

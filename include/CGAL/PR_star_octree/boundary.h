@@ -11,9 +11,9 @@
 /// interior or boundary by an Euler-type count on its link, leaf by leaf, plus the detection of
 /// non-manifold vertices (link neither a sphere nor a disc).
 
+#include <CGAL/PR_star_octree/Leaf_executor.h>
 #include <CGAL/PR_star_octree/Leaf_topology.h>
 #include <CGAL/PR_star_octree/internal/local_complex.h>
-#include <CGAL/PR_star_octree/internal/parallel_leaves.h>
 #include <CGAL/PR_star_octree/parameters.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -24,21 +24,6 @@
 
 namespace CGAL {
 namespace PR_star_octree {
-
-/// \ingroup PkgPRStarOctreeRef
-/// What the link of a vertex is.
-enum class Vertex_type : unsigned char {
-  UNREFERENCED = 0, ///< in no tetrahedron
-  INTERIOR = 1,     ///< link is a triangulated sphere
-  BOUNDARY = 2,     ///< link is a triangulated disc
-  NONMANIFOLD = 3   ///< link is neither (pinched vertex, non-manifold edge or face, several sheets)
-};
-
-static_assert(static_cast<int>(Vertex_type::UNREFERENCED) == static_cast<int>(internal::Link_kind::EMPTY) &&
-                  static_cast<int>(Vertex_type::INTERIOR) == static_cast<int>(internal::Link_kind::CLOSED) &&
-                  static_cast<int>(Vertex_type::BOUNDARY) == static_cast<int>(internal::Link_kind::OPEN) &&
-                  static_cast<int>(Vertex_type::NONMANIFOLD) == static_cast<int>(internal::Link_kind::OTHER),
-              "Vertex_type and internal::Link_kind must have the same values");
 
 /// \ingroup PkgPRStarOctreeRef
 /// How many vertices of each `Vertex_type` a classification found.
@@ -105,46 +90,51 @@ public:
     return link_.euler_count_says_boundary() ? Vertex_type::BOUNDARY : Vertex_type::INTERIOR;
   }
 
-  /// classifies every vertex of the leaf of `local` at once (no relation needs to have been built):
-  /// calls `f(v, type)` for each vertex `v` of the leaf, in increasing order, with the type that
-  /// `classify(local, v)` would return.  Faster than vertex by vertex: the links of the whole leaf
-  /// are gathered in one pass over its tetrahedra.
+  /// classifies every vertex of the leaf of `local` at once: calls `f(v, type)` for each vertex `v`
+  /// of the leaf, in increasing order, with the type that `classify(local, v)` would return.  When
+  /// `local` holds the relation `VERTEX_LINKS` built with the same link check as this classifier
+  /// (`UNCHECKED_LINKS` exactly when `check_links(false)`), its link types are used as they are;
+  /// otherwise the links of the whole leaf are gathered here, in one pass over its tetrahedra (no
+  /// relation needs to have been built).
   template <class Function>
   void classify_leaf(const Leaf_topology<Octree>& local, Function f) {
-    const auto tets = local.tetrahedra();
-    const Index vb = local.vertex_begin();
-    const std::size_t nv = local.vertex_end() - vb;
-    links_.build(local.octree().tetrahedra().data(), tets.shared(), tets.owned(), vb, nv, check_links_);
-    for (std::size_t i = 0; i < nv; ++i)
-      f(static_cast<Index>(vb + i), static_cast<Vertex_type>(links_.kind(i)));
+    const Index vb = local.vertex_begin(), ve = local.vertex_end();
+    if ((local.relations() & VERTEX_LINKS) && ((local.relations() & UNCHECKED_LINKS) == 0) == check_links_) {
+      for (Index v = vb; v < ve; ++v) f(v, local.vertex_type(v));
+      return;
+    }
+    own_.build(local.octree(), local.leaf(), VERTEX_LINKS | (check_links_ ? 0u : UNCHECKED_LINKS));
+    for (Index v = vb; v < ve; ++v) f(v, own_.vertex_type(v));
   }
+
+  /// the relation flags that give `Leaf_topology::vertex_type()` the answers of this classifier
+  unsigned link_relations() const { return VERTEX_LINKS | (check_links_ ? 0u : UNCHECKED_LINKS); }
 
 private:
   bool check_links_;
   internal::Vertex_link<Index> link_;
-  internal::Leaf_links<Index> links_;
+  Leaf_topology<Octree> own_;
 };
 
 namespace internal {
 
 // The boundary pass, in the octree's numbering: `types[v]` for every vertex, and, with
 // `with_triangles`, `on_triangle(t, k)` for every boundary triangle (the face opposite vertex `k`
-// of tetrahedron `t`), each reported once, by the leaf owning its smallest vertex, in leaf order
-// (also in parallel: the triangles are then buffered per leaf).
+// of tetrahedron `t`), each reported once, by the leaf owning its smallest vertex, in leaf order.
 template <class ConcurrencyTag, class Octree, class TriangleVisitor, class NP>
 void classify_vertices(const Octree& tree, bool with_triangles, std::vector<Vertex_type>& types,
                        TriangleVisitor on_triangle, const NP& np) {
   using Index = typename Octree::Index;
-  constexpr bool parallel = is_parallel<ConcurrencyTag>();
   types.assign(tree.number_of_vertices(), Vertex_type::UNREFERENCED);
-  std::vector<std::vector<std::pair<Index, int>>> buffered(
-      parallel && with_triangles ? tree.number_of_leaves() : 0);
-  const unsigned relations = with_triangles ? TRIANGLES : 0u;
-  process_leaves<ConcurrencyTag>(
-      tree, relations, Vertex_classifier<Octree>(np),
-      [&](Vertex_classifier<Octree>& classifier, const Leaf_topology<Octree>& local, std::size_t leaf) {
-        classifier.classify_leaf(local, [&](Index v, Vertex_type type) { types[v] = type; });
-        if (!with_triangles) return;
+  const Vertex_classifier<Octree> classifier(np);
+  const unsigned relations = classifier.link_relations() | (with_triangles ? TRIANGLES : 0u);
+  // Each leaf writes the types of its own vertices and returns its boundary triangles.
+  Leaf_executor<ConcurrencyTag>().map_reduce(
+      tree, relations, 0,
+      [&](int, const Leaf_topology<Octree>& local) {
+        for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v) types[v] = local.vertex_type(v);
+        std::vector<std::pair<Index, int>> triangles;
+        if (!with_triangles) return triangles;
         for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
           if (!local.owns_triangle(f) || local.triangle_tetrahedra(f).size() != 1) continue;
           const Index t = *local.triangle_tetrahedra(f).begin();
@@ -152,15 +142,14 @@ void classify_vertices(const Octree& tree, bool with_triangles, std::vector<Vert
           const auto& tri = local.triangle(f);
           int k = 0;
           while (c[k] == tri[0] || c[k] == tri[1] || c[k] == tri[2]) ++k;
-          if constexpr (parallel)
-            buffered[leaf].emplace_back(t, k);
-          else
-            on_triangle(t, k);
+          triangles.emplace_back(t, k);
         }
+        return triangles;
+      },
+      [&](std::vector<std::pair<Index, int>>&& triangles) {
+        for (const auto& x : triangles) on_triangle(x.first, x.second);
       },
       Progress_reporter<NP>(np));
-  for (const auto& leaf : buffered)
-    for (const auto& x : leaf) on_triangle(x.first, x.second);
 }
 
 } // namespace internal

@@ -11,7 +11,6 @@
 /// seen as a hypersurface of R^4 through the tetrahedral mesh lifted by f.
 
 #include <CGAL/PR_star_octree/boundary.h>
-#include <CGAL/PR_star_octree/internal/parallel_leaves.h>
 #include <CGAL/PR_star_octree/internal/solid_angle.h>
 #include <CGAL/PR_star_octree/parameters.h>
 
@@ -205,16 +204,14 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
                                      CurvatureMap curvature_map,
                                      const NP& np = parameters::default_values()) {
   using Octree = PR_star_octree_3<GT, I>;
-  constexpr bool parallel = internal::is_parallel<ConcurrencyTag>();
   struct State {
-    internal::Leaf_links<I> links;
     std::vector<double> s3, s4, fields;
     std::vector<std::array<double, 3>> points;
   };
   Vertex_type_counts counts;
-  // In parallel, the leaves write their own slots of `result` (octree numbering), copied to the
-  // user's map afterwards; sequentially, each leaf writes to the map directly.
-  std::vector<Vertex_curvature> result(parallel ? tree.number_of_vertices() : 0);
+  // The leaves write their own slots of `result` (octree numbering), copied to the user's map
+  // afterwards, in vertex order: the map is written from the calling thread only.
+  std::vector<Vertex_curvature> result(tree.number_of_vertices());
   // A field in the user's numbering is copied into the octree's numbering first, one read per
   // vertex (the leaves would read it at scattered places, several times per vertex).
   constexpr bool in_place = std::is_same<FieldMap, Octree_field_map<Octree>>::value;
@@ -227,21 +224,18 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
     else
       return values[v];
   };
-  internal::process_leaves<ConcurrencyTag>(
-      tree, 0u, State(), // the leaf's tetrahedra only: the links are gathered here
-      [&](State& state, const Leaf_topology<Octree>& local, std::size_t) {
+  // The links (checked, as `Vertex_classifier` does by default) and the leaf's tetrahedra in local
+  // ids: the coordinates and the field value of each vertex are read once per leaf.
+  Leaf_executor<ConcurrencyTag>().for_each(
+      tree, VERTEX_LINKS | LOCAL_TETRAHEDRA, State(),
+      [&](State& state, const Leaf_topology<Octree>& local) {
         const I vb = local.vertex_begin();
         const std::size_t nv = local.vertex_end() - vb;
-        const auto tets = local.tetrahedra();
-        // The links (checked, as `Vertex_classifier` does by default) and the leaf's tetrahedra in
-        // local ids: the coordinates and the field value of each vertex are read once per leaf.
-        state.links.build(tree.tetrahedra().data(), tets.shared(), tets.owned(), vb, nv,
-                          /* check links */ true, /* keep the tetrahedra */ true);
-        const std::size_t m = state.links.number_of_ids();
+        const std::size_t m = local.number_of_local_vertices();
         state.points.resize(m);
         state.fields.resize(m);
         for (std::size_t j = 0; j < m; ++j) {
-          const I v = state.links.vertex(j);
+          const I v = local.local_vertex(j);
           state.points[j] = tree.coordinates(tree.point(v));
           state.fields[j] = value(v);
         }
@@ -253,8 +247,9 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
         s4.assign(nv, 0.);
         std::array<std::array<double, 3>, 4> p;
         std::array<double, 4> f;
-        for (std::size_t t = 0; t < tets.size(); ++t) {
-          const auto& l = state.links.tetrahedron(t);
+        const std::size_t n_tets = local.tetrahedra().size();
+        for (std::size_t t = 0; t < n_tets; ++t) {
+          const auto& l = local.local_tetrahedron(t);
           for (int i = 0; i < 4; ++i) {
             p[i] = state.points[l[i]];
             f[i] = state.fields[l[i]];
@@ -268,14 +263,7 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
         }
         for (std::size_t i = 0; i < nv; ++i) {
           const I v = static_cast<I>(vb + i);
-          const Vertex_curvature c =
-              internal::finish_curvature(s3[i], s4[i], static_cast<Vertex_type>(state.links.kind(i)));
-          if constexpr (parallel)
-            result[v] = c;
-          else {
-            counts.add(c.type);
-            put(curvature_map, static_cast<std::size_t>(tree.original_vertex(v)), c);
-          }
+          result[v] = internal::finish_curvature(s3[i], s4[i], local.vertex_type(v));
         }
       },
       internal::Progress_reporter<NP>(np));

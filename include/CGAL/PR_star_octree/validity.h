@@ -13,6 +13,7 @@
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/Index_arrays_input.h>
+#include <CGAL/PR_star_octree/Leaf_executor.h>
 #include <CGAL/PR_star_octree/Leaf_topology.h>
 #include <CGAL/PR_star_octree/boundary.h>
 #include <CGAL/PR_star_octree/internal/local_complex.h>
@@ -85,12 +86,14 @@ Validity_result check_validity(const PR_star_octree_3<GT, I>& tree,
     std::size_t positive = 0, negative = 0, degenerate = 0, nonmanifold_vertices = 0;
     std::vector<std::array<Index, 3>> boundary;
   };
-  std::vector<Leaf_result> per_leaf(leaves);
+  std::vector<std::array<Index, 3>> boundary;
+  boundary.reserve(counts.boundary_triangles);
   auto orientation = tree.geom_traits().orientation_3_object();
-  internal::process_leaves<ConcurrencyTag>(
-      tree, TRIANGLES, Vertex_classifier<Octree>(),
-      [&](Vertex_classifier<Octree>& classifier, const Leaf_topology<Octree>& local, std::size_t leaf) {
-        Leaf_result& lr = per_leaf[leaf];
+  const Vertex_classifier<Octree> classifier;
+  Leaf_executor<ConcurrencyTag>().map_reduce(
+      tree, TRIANGLES | classifier.link_relations(), 0,
+      [&](int, const Leaf_topology<Octree>& local) {
+        Leaf_result lr;
         const auto owned = local.tetrahedra().owned();
         for (Index t = owned.first; t < owned.second; ++t) {
           const auto& c = tree.tetrahedron(t);
@@ -103,24 +106,21 @@ Validity_result check_validity(const PR_star_octree_3<GT, I>& tree,
           else
             ++lr.negative;
         }
-        classifier.classify_leaf(local, [&](Index, Vertex_type type) {
-          lr.nonmanifold_vertices += type == Vertex_type::NONMANIFOLD;
-        });
+        for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v)
+          lr.nonmanifold_vertices += local.vertex_type(v) == Vertex_type::NONMANIFOLD;
         for (std::size_t f = 0; f < local.number_of_triangles(); ++f)
           if (local.owns_triangle(f) && local.triangle_tetrahedra(f).size() == 1)
             lr.boundary.push_back(local.triangle(f));
+        return lr;
+      },
+      [&](Leaf_result&& lr) {
+        r.positive += lr.positive;
+        r.negative += lr.negative;
+        r.degenerate += lr.degenerate;
+        r.nonmanifold_vertices += lr.nonmanifold_vertices;
+        boundary.insert(boundary.end(), lr.boundary.begin(), lr.boundary.end());
       },
       [&](std::size_t done, std::size_t) { report(leaves + done, 2 * leaves); });
-  std::vector<std::array<Index, 3>> boundary;
-  boundary.reserve(counts.boundary_triangles);
-  for (Leaf_result& lr : per_leaf) {
-    r.positive += lr.positive;
-    r.negative += lr.negative;
-    r.degenerate += lr.degenerate;
-    r.nonmanifold_vertices += lr.nonmanifold_vertices;
-    boundary.insert(boundary.end(), lr.boundary.begin(), lr.boundary.end());
-    std::vector<std::array<Index, 3>>().swap(lr.boundary);
-  }
   r.inverted = (std::min)(r.positive, r.negative);
 
   // Boundary components: union-find on the boundary triangles, grouped by their shared edges.

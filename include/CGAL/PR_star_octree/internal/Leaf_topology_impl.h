@@ -37,6 +37,12 @@ void Leaf_topology<Octree>::build(const Octree& tree, Node_index leaf, unsigned 
     build_faces(relations & TETRAHEDRON_ADJACENCY, relations & TRIANGLES);
   if (relations & VERTEX_VERTICES) build_vv();
   if (relations & EDGES) build_edges();
+  if (relations & (VERTEX_LINKS | LOCAL_TETRAHEDRA)) {
+    const auto tets = tetrahedra();
+    links_.build(tree_->tetrahedra().data(), tets.shared(), tets.owned(), vb_, ve_ - vb_,
+                 !(relations & UNCHECKED_LINKS), (relations & LOCAL_TETRAHEDRA) != 0,
+                 (relations & VERTEX_LINKS) != 0);
+  }
 }
 
 // Algorithm 2 and the triangles: the faces with a vertex in the leaf, paired by the kernel.

@@ -9,9 +9,14 @@
 // The construction and the statistics of `CGAL::PR_star_octree_3` (included by PR_star_octree.h).
 
 #include <CGAL/PR_star_octree.h>
-#include <CGAL/PR_star_octree/internal/parallel_leaves.h>
+#include <CGAL/PR_star_octree/internal/concurrency.h>
 
 #include <bitset>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
 
 namespace CGAL {
 

@@ -580,12 +580,21 @@ public:
   // Classifies the vertices [vb, vb + nv) from the tetrahedra `shared` (indices into T) and the
   // contiguous range `owned` of T (together: every tetrahedron incident in those vertices).
   // With `keep_tetrahedra`, the leaf's tetrahedra are also kept in local ids (see `tetrahedron()`).
+  // Without `classify`, only the local ids (and the tetrahedra, when kept) are built.
   template <class Tetrahedron, class Shared>
   void build(const Tetrahedron* T, const Shared& shared, std::pair<Index, Index> owned, Index vb,
-             std::size_t nv, bool check_links, bool keep_tetrahedra = false) {
+             std::size_t nv, bool check_links, bool keep_tetrahedra = false, bool classify_links = true) {
     gather(T, shared, owned, vb, nv, keep_tetrahedra);
-    kinds_.resize(nv);
-    for (std::size_t i = 0; i < nv; ++i) kinds_[i] = classify(i, check_links);
+    kinds_.resize(classify_links ? nv : 0);
+    if (classify_links)
+      for (std::size_t i = 0; i < nv; ++i) kinds_[i] = classify(i, check_links);
+  }
+
+  // the bytes held (the buffers' capacities)
+  std::size_t memory_bytes() const {
+    return corners_.capacity() * sizeof(Corner) + (offsets_.capacity() + pos_.capacity()) * 4 +
+           triangles_.capacity() * sizeof(Triangle) + vertices_.capacity() * sizeof(Index) +
+           tetrahedra_.capacity() * 16 + stamps_.capacity() * 4 + link_ids_.capacity() + kinds_.capacity();
   }
 
   // the kind of the link of vertex vb + i

@@ -11,6 +11,7 @@
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/Index_arrays_input.h>
+#include <CGAL/PR_star_octree/Leaf_executor.h>
 #include <CGAL/PR_star_octree/Leaf_topology.h>
 #include <CGAL/PR_star_octree/boundary.h>
 #include <CGAL/PR_star_octree/internal/collapse_tester.h>
@@ -230,49 +231,58 @@ private:
     deleted_vertex_.assign(pos_.size(), 0);
     extras_.clear();
 
-    for (Index leaf : tree.leaves()) {
-      if (removed_ >= target_) break;
-      vb_ = tree.node(leaf).vertex_begin;
-      ve_ = tree.node(leaf).vertex_end;
-      const std::size_t nv = ve_ - vb_;
-      // The stars of the leaf's vertices: VT of the round's octree without the tetrahedra deleted
-      // by earlier leaves, plus those renamed into them by earlier leaves (`extras_`).
-      local_.build(tree, leaf, VERTEX_TETRAHEDRA);
-      if (stars_.size() < nv) stars_.resize(nv);
-      for (std::size_t i = 0; i < nv; ++i) {
-        const Index v = static_cast<Index>(vb_ + i);
-        stars_[i].clear();
-        for (Index t : local_.vertex_tetrahedra(v))
-          if (!deleted_tet_[t]) stars_[i].push_back(t);
-        auto it = extras_.find(v);
-        if (it == extras_.end()) continue;
-        for (Index t : it->second) // (kept: a later leaf may need the whole star of v again)
-          if (!deleted_tet_[t]) stars_[i].push_back(t);
-      }
-      outside_.clear();
-      // Candidate edges: at least one end in the leaf, short enough.
-      queue_ = decltype(queue_)();
-      for (Index v = vb_; v < ve_; ++v) {
-        neighbors(v, nbr_);
-        for (Index w : nbr_)
-          if ((w > v || !in_leaf(w)) && short_enough(v, w)) push(v, w);
-      }
-      while (!queue_.empty() && removed_ < target_) {
-        const Entry e = queue_.top();
-        queue_.pop();
-        if (deleted_vertex_[e.a] || deleted_vertex_[e.b]) continue;
-        if (priority(e.a, e.b) != e.priority) { // the neighbourhood changed the priority: queue it again
-          push(e.a, e.b);
-          continue;
-        }
-        collapse_edge(e.a, e.b);
-      }
-    }
+    // The leaves one after the other (each collapse changes the mesh the next leaves see), until
+    // the target is reached.
+    Leaf_executor<CGAL::Sequential_tag>().for_each(
+        tree, VERTEX_TETRAHEDRA, 0, [&](int, const Leaf_topology<Octree>& local) { simplify_leaf(local); },
+        internal::No_progress(), [&] { return removed_ >= target_; });
     queue_ = decltype(queue_)();
     outside_.clear();
     tree_ = nullptr;
+    compact(tree, points, tets, origin, sid);
+  }
 
-    // Compaction, in the octree's order (spatially coherent for the next round).
+  // The collapses of one leaf of the round's octree.
+  void simplify_leaf(const Leaf_topology<Octree>& local) {
+    vb_ = local.vertex_begin();
+    ve_ = local.vertex_end();
+    const std::size_t nv = ve_ - vb_;
+    // The stars of the leaf's vertices: VT of the round's octree without the tetrahedra deleted
+    // by earlier leaves, plus those renamed into them by earlier leaves (`extras_`).
+    if (stars_.size() < nv) stars_.resize(nv);
+    for (std::size_t i = 0; i < nv; ++i) {
+      const Index v = static_cast<Index>(vb_ + i);
+      stars_[i].clear();
+      for (Index t : local.vertex_tetrahedra(v))
+        if (!deleted_tet_[t]) stars_[i].push_back(t);
+      auto it = extras_.find(v);
+      if (it == extras_.end()) continue;
+      for (Index t : it->second) // (kept: a later leaf may need the whole star of v again)
+        if (!deleted_tet_[t]) stars_[i].push_back(t);
+    }
+    outside_.clear();
+    // Candidate edges: at least one end in the leaf, short enough.
+    queue_ = decltype(queue_)();
+    for (Index v = vb_; v < ve_; ++v) {
+      neighbors(v, nbr_);
+      for (Index w : nbr_)
+        if ((w > v || !in_leaf(w)) && short_enough(v, w)) push(v, w);
+    }
+    while (!queue_.empty() && removed_ < target_) {
+      const Entry e = queue_.top();
+      queue_.pop();
+      if (deleted_vertex_[e.a] || deleted_vertex_[e.b]) continue;
+      if (priority(e.a, e.b) != e.priority) { // the neighbourhood changed the priority: queue it again
+        push(e.a, e.b);
+        continue;
+      }
+      collapse_edge(e.a, e.b);
+    }
+  }
+
+  // Compaction, in the octree's order (spatially coherent for the next round).
+  void compact(const Octree& tree, std::vector<Point_3>& points, std::vector<Tetrahedron>& tets,
+               std::vector<std::size_t>& origin, std::vector<std::size_t>& sid) {
     std::vector<Index> renumber(pos_.size(), Octree::no_node);
     std::vector<Point_3> next_points;
     std::vector<std::size_t> next_origin, next_sid;
@@ -866,7 +876,6 @@ private:
   Edge_fan<Index> fan_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
   Collapse_tester<GeomTraits, Index> tester_;
-  Leaf_topology<Octree> local_;
 };
 
 } // namespace internal
