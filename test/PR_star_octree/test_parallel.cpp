@@ -9,6 +9,7 @@
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/IO.h>
+#include <CGAL/PR_star_octree/Leaf_executor.h>
 #include <CGAL/PR_star_octree/Leaf_topology.h>
 #include <CGAL/PR_star_octree/boundary.h>
 #include <CGAL/PR_star_octree/distortion.h>
@@ -24,6 +25,11 @@
 #include <iterator>
 #include <string>
 #include <vector>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#endif
 
 #include "test_harness.h"
 
@@ -114,6 +120,117 @@ void compare(const Mesh& mesh, std::size_t kv, const std::string& what) {
   CHECK_EQUAL(v_seq.euler_characteristic, v_par.euler_characteristic);
 }
 
+// The leaf executor itself: the sequence of leaf results the reduction sees is the same for 1, 2
+// and 8 threads and sequentially; a partition of the leaves into `Leaf_range`s gives the same
+// results part by part; `stop` stops; `VERTEX_LINKS` gives the types of the per-vertex
+// classification (`Vertex_classifier::classify()`, one `Vertex_link` per star).
+void check_executor(const Mesh& mesh, std::size_t kv, const std::string& what) {
+  prstar_test::Failure_context context(what + " executor k_v " + std::to_string(kv));
+  const Octree tree(PSO::make_input(mesh), kv);
+  using Local = PSO::Leaf_topology<Octree>;
+  // Per leaf: its node, the number of owned edges, and the checked and unchecked link types.
+  struct Leaf_record {
+    Octree::Node_index leaf;
+    std::size_t edges;
+    std::vector<PSO::Vertex_type> types;
+    bool operator==(const Leaf_record& o) const {
+      return leaf == o.leaf && edges == o.edges && types == o.types;
+    }
+  };
+  auto run = [&](const auto& executor, unsigned links, std::vector<Leaf_record>& out) {
+    std::size_t last = 0;
+    bool monotone = true;
+    executor.map_reduce(
+        tree, PSO::EDGES | links, std::vector<int>(3, 7), // a state that must arrive intact
+        [&](std::vector<int>& state, const Local& local) {
+          CHECK(state.size() == 3 && state[0] == 7);
+          Leaf_record r{local.leaf(), 0, {}};
+          for (std::size_t e = 0; e < local.number_of_edges(); ++e) r.edges += local.owns_edge(e);
+          for (auto v = local.vertex_begin(); v < local.vertex_end(); ++v)
+            r.types.push_back(local.vertex_type(v));
+          return r;
+        },
+        [&](Leaf_record&& r) { out.push_back(std::move(r)); },
+        [&](std::size_t done, std::size_t total) {
+          monotone = monotone && done == last + 1 && done <= total;
+          last = done;
+        });
+    CHECK(monotone);
+  };
+  std::vector<Leaf_record> seq, unchecked;
+  run(PSO::Leaf_executor<CGAL::Sequential_tag>(), PSO::VERTEX_LINKS, seq);
+  run(PSO::Leaf_executor<CGAL::Sequential_tag>(), PSO::VERTEX_LINKS | PSO::UNCHECKED_LINKS, unchecked);
+  CHECK_EQUAL(seq.size(), tree.number_of_leaves());
+  for (std::size_t i = 0; i < seq.size(); ++i) CHECK(seq[i].leaf == tree.leaves()[i]);
+
+  // Against the per-vertex classification, checked and unchecked.
+  PSO::Vertex_classifier<Octree> checked_classifier, unchecked_classifier(params::check_links(false));
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < seq.size(); ++i) {
+    const Local local(tree, seq[i].leaf, PSO::VERTEX_TETRAHEDRA);
+    for (auto v = local.vertex_begin(); v < local.vertex_end(); ++v) {
+      differ += seq[i].types[v - local.vertex_begin()] != checked_classifier.classify(local, v);
+      differ += unchecked[i].types[v - local.vertex_begin()] != unchecked_classifier.classify(local, v);
+    }
+  }
+  CHECK_EQUAL(differ, std::size_t(0));
+
+#ifdef CGAL_LINKED_WITH_TBB
+  for (int threads : {1, 2, 8}) {
+    // (eight threads even on a machine with fewer cores)
+    tbb::global_control allow(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(threads));
+    tbb::task_arena arena(threads);
+    std::vector<Leaf_record> par;
+    arena.execute([&] { run(PSO::Leaf_executor<CGAL::Parallel_tag>(), PSO::VERTEX_LINKS, par); });
+    CHECK_MSG(par == seq, "threads " + std::to_string(threads));
+    // The whole boundary pass too, bit for bit.
+    std::vector<PSO::Vertex_type> t_seq(mesh.points.size()), t_par(mesh.points.size());
+    std::vector<std::array<std::size_t, 3>> f_seq, f_par;
+    PSO::compute_boundary<CGAL::Sequential_tag>(tree, CGAL::make_property_map(t_seq),
+                                                params::boundary_triangles_output(std::back_inserter(f_seq)));
+    arena.execute([&] {
+      PSO::compute_boundary<CGAL::Parallel_tag>(tree, CGAL::make_property_map(t_par),
+                                                params::boundary_triangles_output(std::back_inserter(f_par)));
+    });
+    CHECK(t_seq == t_par);
+    CHECK(f_seq == f_par);
+  }
+#endif
+
+  // A partition into three ranges (one of them empty, one past the end): the same records in order.
+  const std::size_t n = tree.number_of_leaves();
+  std::vector<Leaf_record> parts;
+  for (PSO::Leaf_range r :
+       {PSO::Leaf_range{0, n / 3}, PSO::Leaf_range{n / 3, n / 3}, PSO::Leaf_range{n / 3, n + 5}}) {
+    std::vector<Leaf_record> part;
+    run(PSO::Leaf_executor<CGAL::Parallel_if_available_tag>(r), PSO::VERTEX_LINKS, part);
+    CHECK_EQUAL(part.size(), (std::min)(r.last, n) - (std::min)(r.first, (std::min)(r.last, n)));
+    parts.insert(parts.end(), part.begin(), part.end());
+  }
+  CHECK(parts == seq);
+
+  // Stop after five leaves: sequentially exactly five, in parallel at least five and all in order.
+  for (int parallel = 0; parallel < 2; ++parallel) {
+    std::atomic<std::size_t> reduced{0}; // (`stop` and `reduce` may run on different threads)
+    bool in_order = true;
+    auto f = [](int, const Local& local) { return local.leaf(); };
+    auto reduce = [&](Octree::Node_index leaf) { in_order = in_order && leaf == tree.leaves()[reduced++]; };
+    auto stop = [&] { return reduced >= 5; };
+    if (parallel)
+      PSO::Leaf_executor<CGAL::Parallel_if_available_tag>().map_reduce(tree, 0, 0, f, reduce,
+                                                                       PSO::internal::No_progress(), stop);
+    else
+      PSO::Leaf_executor<CGAL::Sequential_tag>().map_reduce(tree, 0, 0, f, reduce,
+                                                            PSO::internal::No_progress(), stop);
+    CHECK(in_order);
+    if (parallel)
+      CHECK(reduced.load() >= (std::min<std::size_t>)(5, n));
+    else
+      CHECK_EQUAL(reduced.load(), (std::min<std::size_t>)(5, n));
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -130,12 +247,14 @@ int main(int argc, char** argv) {
     PSO::IO::read_tetrahedral_mesh(*path, mesh);
     for (std::size_t kv : {std::size_t(1), std::size_t(20), std::size_t(200), Octree::infinite_bucket_size})
       compare(mesh, kv, name);
+    check_executor(mesh, 20, name);
   }
   if (data.report_shared())
     if (const auto path = data.shared_file("skull_14k.off")) { // non-manifold vertices
       Mesh mesh;
       PSO::IO::read_tetrahedral_mesh(*path, mesh);
       compare(mesh, 50, "skull_14k.off");
+      check_executor(mesh, 50, "skull_14k.off");
     }
   return prstar_test::summary("test_parallel");
 }

@@ -103,7 +103,8 @@ public:
   ///
   /// `stop()` (optional) is asked before each leaf is started (sequentially; in parallel, before
   /// each chunk of leaves): once it returns `true`, no further leaf is started, and the leaves
-  /// already started are finished and reduced.
+  /// already started are finished and reduced.  In parallel, `stop()`, the reduction and `progress`
+  /// may each be called from any thread (never two calls of the same one at once).
   template <class Octree, class State, class LeafFunction, class Reduce,
             class Progress = internal::No_progress, class Stop = internal::Never_stop>
   void map_reduce(const Octree& tree, unsigned relations, const State& state_prototype, LeafFunction&& f,
@@ -224,7 +225,7 @@ private:
 /// \param tree the octree
 /// \param relations the relations to build (a combination of `Relations`)
 /// \param f called with each leaf's `Leaf_topology`
-/// \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones
+/// \param np an optional sequence of named parameters among the ones
 ///        listed below
 ///
 /// \cgalNamedParamsBegin
@@ -249,7 +250,7 @@ void for_each_leaf(const PR_star_octree_3<GT, I>& tree, unsigned relations, Func
 /// \tparam ConcurrencyTag `CGAL::Parallel_tag`, `CGAL::Sequential_tag` or the default
 ///         `CGAL::Parallel_if_available_tag` (the same counts either way)
 /// \param tree the octree
-/// \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones
+/// \param np an optional sequence of named parameters among the ones
 ///        listed below
 ///
 /// \cgalNamedParamsBegin
