@@ -261,14 +261,7 @@ public:
     for (Node_index c = n; nodes_[c].parent != no_node; c = nodes_[c].parent)
       path.push_back(static_cast<unsigned>(c - nodes_[nodes_[c].parent].first_child));
     std::array<double, 3> lo = root_lo_, hi = root_hi_;
-    for (auto it = path.rbegin(); it != path.rend(); ++it)
-      for (int a = 0; a < 3; ++a) {
-        const double mid = midpoint(lo[a], hi[a]);
-        if ((*it >> a) & 1u)
-          lo[a] = mid;
-        else
-          hi[a] = mid;
-      }
+    for (auto it = path.rbegin(); it != path.rend(); ++it) child_box(*it, lo, hi);
     return Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
   }
   /// the leaf whose box contains `p` (descends from the root; `p` outside the root box is clamped)
@@ -277,15 +270,8 @@ public:
     std::array<double, 3> lo = root_lo_, hi = root_hi_;
     Node_index n = root();
     while (!nodes_[n].is_leaf()) {
-      unsigned code = 0;
-      for (int a = 0; a < 3; ++a) {
-        const double mid = midpoint(lo[a], hi[a]);
-        if (c[a] >= mid) {
-          code |= 1u << a;
-          lo[a] = mid;
-        } else
-          hi[a] = mid;
-      }
+      const unsigned code = octant(c, center(lo, hi));
+      child_box(code, lo, hi);
       n = nodes_[n].first_child + code;
     }
     return n;
@@ -342,7 +328,22 @@ public:
   /// @}
 
 private:
+  // The subdivision of a box [lo, hi) into octants, the one definition used by the construction,
+  // `node_bbox()` and `locate()`: octant `c` is the upper half along axis `a` when bit `a` of `c`
+  // is set, the lower half otherwise, cut at `center()`.
   static double midpoint(double lo, double hi) { return lo + (hi - lo) * 0.5; }
+  static std::array<double, 3> center(const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
+    return {{midpoint(lo[0], hi[0]), midpoint(lo[1], hi[1]), midpoint(lo[2], hi[2])}};
+  }
+  // the octant of a box of center `mid` that holds `p` (half-open: a point on the cut goes up)
+  static unsigned octant(const std::array<double, 3>& p, const std::array<double, 3>& mid) {
+    return unsigned(p[0] >= mid[0]) | (unsigned(p[1] >= mid[1]) << 1) | (unsigned(p[2] >= mid[2]) << 2);
+  }
+  // [lo, hi) becomes its octant `c`
+  static void child_box(unsigned c, std::array<double, 3>& lo, std::array<double, 3>& hi) {
+    const std::array<double, 3> mid = center(lo, hi);
+    for (int a = 0; a < 3; ++a) ((c >> a) & 1u ? lo[a] : hi[a]) = mid[a];
+  }
 
   // An input point as a `Point_3`: converted, or made from its `x()`, `y()`, `z()` by the traits'
   // `Construct_point_3`.

@@ -288,14 +288,11 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
     }
 
     // Stable counting sort of [b, e) by octant: bit a set when coordinate a >= midpoint.
-    std::array<double, 3> mid;
-    for (int a = 0; a < 3; ++a) mid[a] = midpoint(item.lo[a], item.hi[a]);
+    const std::array<double, 3> mid = center(item.lo, item.hi);
     code.resize(count);
     std::array<std::size_t, 9> start{};
     for (std::size_t i = 0; i < count; ++i) {
-      const std::array<double, 3> p = coordinates(points_[order[b + i]]);
-      const unsigned c =
-          unsigned(p[0] >= mid[0]) | (unsigned(p[1] >= mid[1]) << 1) | (unsigned(p[2] >= mid[2]) << 2);
+      const unsigned c = octant(coordinates(points_[order[b + i]]), mid);
       code[i] = static_cast<unsigned char>(c);
       ++start[c + 1];
     }
@@ -316,12 +313,7 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
     // Push the children in reverse so that child 0 is visited first: leaves come out depth first.
     for (unsigned c = 8; c-- > 0;) {
       Item child{static_cast<Node_index>(first + c), item.lo, item.hi, item.depth + 1};
-      for (int a = 0; a < 3; ++a) {
-        if ((c >> a) & 1u)
-          child.lo[a] = mid[a];
-        else
-          child.hi[a] = mid[a];
-      }
+      child_box(c, child.lo, child.hi);
       stack.push_back(child);
     }
   }
