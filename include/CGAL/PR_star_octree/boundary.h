@@ -69,7 +69,14 @@ class Vertex_classifier {
 public:
   using Index = typename Octree::Index;
 
-  /// \param np optional named parameters: `check_links(bool)` (default `true`)
+  /// \param np an optional sequence of named parameters among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{check_links}
+  ///     \cgalParamDescription{whether each link is checked to be a sphere or a disc (`false`: the paper's
+  ///     Euler count only; see `Vertex_classifier`)} \cgalParamType{`bool`} \cgalParamDefault{`true`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   template <class NP = parameters::Default_named_parameters>
   explicit Vertex_classifier(const NP& np = parameters::default_values())
       : check_links_(
@@ -164,14 +171,29 @@ void classify_vertices(const Octree& tree, bool with_triangles, std::vector<Vert
 /// \param vertex_type_map receives the type of each vertex
 /// \tparam VertexTypeMap a model of `WritablePropertyMap` with key `std::size_t` (the user's vertex
 ///         index) and value `Vertex_type`, e.g. `CGAL::make_property_map(std::vector<Vertex_type>&)`
-/// \param np optional named parameters:
-/// - `check_links(bool)`: check that each link is a sphere or a disc (default `true`; see
-///   `Vertex_classifier`)
-/// - `with_boundary_triangles(bool)`: also find the boundary triangles (default `true`)
-/// - `boundary_triangles_output(OutputIterator)`: receives each boundary triangle once, as a
-///   `std::array<std::size_t, 3>` of user vertex indices oriented outward (its normal by the
-///   right-hand rule points out of the mesh)
-/// - `progress(F)`: called as `F(done, total)` after each leaf
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{check_links}
+///     \cgalParamDescription{whether each link is checked to be a sphere or a disc (`false`: the paper's
+///     Euler count only; see `Vertex_classifier`)} \cgalParamType{`bool`} \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{with_boundary_triangles}
+///     \cgalParamDescription{whether the boundary triangles are also found (and counted)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true` (always `true` with `boundary_triangles_output`)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{boundary_triangles_output}
+///     \cgalParamDescription{receives each boundary triangle once, in leaf order, as a
+///     `std::array<std::size_t, 3>` of user vertex indices oriented outward (its normal by the right-hand
+///     rule points out of the mesh)} \cgalParamType{an output iterator} \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress}
+///     \cgalParamDescription{called as `F(done, total)` after each leaf, `done` never decreasing}
+///     \cgalParamType{a callable `F(std::size_t, std::size_t)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \tparam ConcurrencyTag `CGAL::Parallel_tag` (leaves processed by several threads with TBB),
 ///         `CGAL::Sequential_tag`, or the default `CGAL::Parallel_if_available_tag`; the results are the

@@ -192,7 +192,15 @@ Vertex_curvature vertex_curvature(const Leaf_topology<Octree>& local, const Fiel
 /// \param tree the octree of the mesh
 /// \param field the scalar field
 /// \param curvature_map receives the curvature of each vertex
-/// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{progress}
+///     \cgalParamDescription{called as `F(done, total)` after each leaf, `done` never decreasing}
+///     \cgalParamType{a callable `F(std::size_t, std::size_t)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \tparam ConcurrencyTag `CGAL::Parallel_tag`, `CGAL::Sequential_tag` or the default
 ///         `CGAL::Parallel_if_available_tag`: the same values either way, bit for bit (the field
 ///         map is read once per vertex, from the calling thread, before the leaves; a field map of
@@ -282,9 +290,26 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
 /// \param tree the octree of the mesh
 /// \param field the scalar field
 /// \param distortion_map receives the distortion of each vertex
-/// \param np optional named parameters: `domain_curvature_map(PMap)` receives the 3D concentrated
-/// curvature of the domain (value `double`), `vertex_type_map(PMap)` the `Vertex_type` of each
-/// vertex (both keyed by the user's vertex index); `progress(F)` as in `for_each_leaf()`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{domain_curvature_map}
+///     \cgalParamDescription{receives the 3D concentrated curvature of the domain at each vertex}
+///     \cgalParamType{a `WritablePropertyMap` with key `std::size_t` (the user's vertex index) and value
+///     `double`} \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_type_map}
+///     \cgalParamDescription{receives the `Vertex_type` of each vertex}
+///     \cgalParamType{a `WritablePropertyMap` with key `std::size_t` (the user's vertex index) and value
+///     `Vertex_type`} \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress}
+///     \cgalParamDescription{called as `F(done, total)` after each leaf, `done` never decreasing}
+///     \cgalParamType{a callable `F(std::size_t, std::size_t)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \tparam ConcurrencyTag as in `compute_curvature()`
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, class I, class FieldMap,
           class DistortionMap, class NP = parameters::Default_named_parameters>
 Vertex_type_counts compute_discrete_distortion(const PR_star_octree_3<GT, I>& tree, const FieldMap& field,

@@ -58,8 +58,15 @@ struct Validity_result {
 /// Checks the mesh of `tree` leaf by leaf (see `Validity_result`).  Memory beyond the octree: the
 /// local structure of the largest leaf and the boundary triangles.
 /// \param tree the octree of the mesh
-/// \param np optional named parameters: `progress(F)`, called as `F(done, total)` after each leaf of
-/// each of the two passes (`total` is twice the number of leaves)
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{progress}
+///     \cgalParamDescription{called as `F(done, total)` after each leaf of each of the two passes (`total` is
+///     twice the number of leaves)} \cgalParamType{a callable `F(std::size_t, std::size_t)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \tparam ConcurrencyTag `CGAL::Parallel_tag`, `CGAL::Sequential_tag` or the default
 ///         `CGAL::Parallel_if_available_tag` (the same result either way)
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, class I,
@@ -163,7 +170,20 @@ Validity_result check_validity(const PR_star_octree_3<GT, I>& tree,
 /// `check_validity(const PR_star_octree_3&, const NP&)`.
 /// \param points the vertices
 /// \param tetrahedra four vertex indices per tetrahedron
-/// \param np optional named parameters: `bucket_size` (default 50), `progress(F)`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{bucket_size}
+///     \cgalParamDescription{the bucket threshold k_v of the octree}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{50}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress}
+///     \cgalParamDescription{as in `check_validity(const PR_star_octree_3&, const NP&)`}
+///     \cgalParamType{a callable `F(std::size_t, std::size_t)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \throws std::invalid_argument as the `PR_star_octree_3` constructor (index out of range,
 /// a vertex twice in a tetrahedron, non-finite coordinate)
 template <class PointRange, class TetrahedronRange, class NP = parameters::Default_named_parameters>
