@@ -425,16 +425,18 @@ void test_only_quality_floor_refuses() {
     const auto input = P::make_input(l.points, l.tets);
     std::map<std::size_t, bool> keep; // every vertex but r is kept: only r can go
     for (std::size_t v = 0; v < l.points.size(); ++v) keep[v] = v != r;
-    const auto np =
-        params::max_edge_length(bound).vertex_is_constrained_map(boost::make_assoc_property_map(keep));
-    const auto done = P::simplify(input, np.quality_floor(0.0));
+    // (%CGAL's vertex_is_constrained_map returns CGAL's parameters: the package's come first)
+    const auto keep_map = boost::make_assoc_property_map(keep);
+    const auto done = P::simplify(
+        input, params::max_edge_length(bound).quality_floor(0.0).vertex_is_constrained_map(keep_map));
     if (done.statistics.removed_tetrahedra == 0) continue; // the link condition, say: not this case
     found = true;
     std::cout << "quality floor: k at " << l.points[k] << ", a sliver of " << worst << " degrees (attempt "
               << attempt << ")" << std::endl;
     CHECK(min_dihedral(done.mesh.points, done.mesh.tetrahedra) < 5);
     CHECK(P::check_validity(done.mesh.points, done.mesh.tetrahedra).valid);
-    const auto refused = P::simplify(input, np);
+    const auto refused =
+        P::simplify(input, params::max_edge_length(bound).vertex_is_constrained_map(keep_map));
     CHECK_EQUAL(refused.statistics.removed_tetrahedra, std::size_t(0));
     CHECK(refused.statistics.blocked.quality >= 1);
     // (the other candidates join two kept vertices: refused as features in both runs)
@@ -442,7 +444,9 @@ void test_only_quality_floor_refuses() {
                     refused.statistics.blocked.flip,
                 std::size_t(0));
     // The radius-ratio floor refuses it too.
-    const auto rr = P::simplify(input, np.quality_measure(P::Quality_measure::RADIUS_RATIO));
+    const auto rr = P::simplify(input, params::max_edge_length(bound)
+                                           .quality_measure(P::Quality_measure::RADIUS_RATIO)
+                                           .vertex_is_constrained_map(keep_map));
     CHECK_EQUAL(rr.statistics.removed_tetrahedra, std::size_t(0));
     CHECK(rr.statistics.blocked.quality >= 1);
   }
@@ -581,7 +585,8 @@ P::Simplification_statistics check_run(const Mesh& mesh, const Brute& in, const 
     const auto d =
         P::boundary_distance(mesh.points, mesh.tetrahedra, res.mesh.points, res.mesh.tetrahedra, 0.);
     if (!(d.hausdorff() <= s.max_boundary_error))
-      FAIL(name << ": boundary distance " << d.input_to_output << " / " << d.output_to_input << " over the bound " << s.max_boundary_error);
+      FAIL(name << ": boundary distance " << d.input_to_output << " / " << d.output_to_input
+                << " over the bound " << s.max_boundary_error);
   }
   if (o.target_fraction > 0 && s.stop != P::Simplification_stop::TARGET_REACHED)
     CHECK(s.stop == P::Simplification_stop::BLOCKED);

@@ -45,6 +45,21 @@ enum class Simplification_stop {
 };
 
 /// \ingroup PkgPRStarOctreeRef
+/// Why `simplify()` did not collapse a candidate edge: the first check its preferred collapse failed
+/// (what a collapse filter returns, and what a simplification visitor is told).
+enum class Collapse_refusal {
+  NONE,             ///< not refused: the collapse is done
+  DIFFERENT_LEAVES, ///< only the end in another leaf could be removed
+  FEATURE,          ///< a corner, or a feature vertex not moving along its feature curve
+  BOUNDARY,         ///< a surface vertex not moving along the surface, or a non-manifold end
+  FLIP,             ///< a tetrahedron would flip or become flat
+  LINK,             ///< the link condition (of the volume, of the surface or of the feature curves)
+  QUALITY,          ///< the quality floor
+  ERROR,            ///< the bound on the distance to the input surface
+  FILTER            ///< any other reason of a user's collapse filter
+};
+
+/// \ingroup PkgPRStarOctreeRef
 /// What a run of `simplify()` did.
 struct Simplification_statistics {
   std::size_t input_vertices = 0, output_vertices = 0;
@@ -66,6 +81,7 @@ struct Simplification_statistics {
     std::size_t feature = 0; ///< a corner, or a feature vertex not moving along its feature curve
     std::size_t quality = 0; ///< the quality floor
     std::size_t error = 0;   ///< the bound on the distance to the input surface
+    std::size_t filter = 0;  ///< a user's collapse filter (`Collapse_refusal::FILTER`)
   } blocked;
   Blocked blocked_last_round; ///< the same counts in the last round (what stopped a `BLOCKED` run)
   Simplification_stop stop = Simplification_stop::NOTHING_LEFT; ///< why it stopped

@@ -33,8 +33,6 @@ namespace PR_star_octree {
   X(max_boundary_error)                                                                                      \
   X(collapse_priority)                                                                                       \
   X(collapse_placement)                                                                                      \
-  X(vertex_is_constrained_map)                                                                               \
-  X(edge_is_constrained_map)                                                                                 \
   X(progress)                                                                                                \
   X(domain_curvature_map)                                                                                    \
   X(vertex_type_map)                                                                                         \
