@@ -84,7 +84,8 @@ int main(int argc, char** argv) {
       CGAL::PR_star_octree::Statistics s;
       for (int r = 0; r <= reps; ++r) { // r = 0 is the warm-up
         const double t0 = now();
-        Octree tree(CGAL::PR_star_octree::make_input(mesh), kv);
+        Octree tree(CGAL::PR_star_octree::make_input(mesh),
+                    CGAL::PR_star_octree::parameters::bucket_size(kv));
         const double t = now() - t0;
         if (r > 0) best = std::min(best, t);
         if (r == reps) s = tree.statistics();

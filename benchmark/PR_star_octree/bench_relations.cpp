@@ -100,8 +100,10 @@ std::size_t mesh_bytes(const Mesh& m) {
 Result run_prstar(const Mesh& mesh, std::size_t kv, int reps) {
   Result r;
   std::unique_ptr<Octree> tree;
-  r.build_seconds =
-      best_of(reps, [&] { tree = std::make_unique<Octree>(CGAL::PR_star_octree::make_input(mesh), kv); });
+  r.build_seconds = best_of(reps, [&] {
+    tree = std::make_unique<Octree>(CGAL::PR_star_octree::make_input(mesh),
+                                    CGAL::PR_star_octree::parameters::bucket_size(kv));
+  });
   const auto s = tree->statistics();
   r.nodes = s.nodes;
   r.leaves = s.leaves;
@@ -207,7 +209,7 @@ Result run_cgal(const Mesh& mesh, int reps) {
 
 // The mesh re-indexed in the PR-star order (V depth-first by leaves, T by smallest vertex).
 Mesh prstar_order(const Mesh& mesh) {
-  Octree tree(CGAL::PR_star_octree::make_input(mesh), 100);
+  Octree tree(CGAL::PR_star_octree::make_input(mesh), CGAL::PR_star_octree::parameters::bucket_size(100));
   Mesh m;
   m.points = tree.points();
   m.tetrahedra = tree.tetrahedra();

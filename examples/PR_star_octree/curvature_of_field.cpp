@@ -29,7 +29,8 @@ int main() {
         for (const auto& p : paths) tetrahedra.push_back({c[0], c[p[0]], c[p[1]], c[7]});
       }
 
-  CGAL::PR_star_octree_3<Kernel> octree(CGAL::PR_star_octree::make_input(points, tetrahedra), 20);
+  CGAL::PR_star_octree_3<Kernel> octree(CGAL::PR_star_octree::make_input(points, tetrahedra),
+                                        CGAL::PR_star_octree::parameters::bucket_size(20));
   // A field is a property map from the user's vertex index to a double.
   std::vector<double> field(points.size());
   for (std::size_t v = 0; v < points.size(); ++v)

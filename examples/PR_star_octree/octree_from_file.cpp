@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   for (std::size_t kv : {20, 100, 400}) {
-    CGAL::PR_star_octree_3<> octree(CGAL::PR_star_octree::make_input(mesh), kv);
+    CGAL::PR_star_octree_3<> octree(CGAL::PR_star_octree::make_input(mesh),
+                                    CGAL::PR_star_octree::parameters::bucket_size(kv));
     const auto s = octree.statistics();
     std::cout << "k_v = " << kv << ": |N| = " << s.nodes << ", |N_leaf| = " << s.leaves << ", chi = " << s.chi
               << ", overhead = " << s.prstar_overhead_per_vertex

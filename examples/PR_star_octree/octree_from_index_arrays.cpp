@@ -16,7 +16,8 @@ int main() {
                                                 {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
 
   // Bucket threshold k_v = 2: a leaf splits when it would hold more than two vertices.
-  CGAL::PR_star_octree_3<Kernel> octree(CGAL::PR_star_octree::make_input(points, tetrahedra), 2);
+  CGAL::PR_star_octree_3<Kernel> octree(CGAL::PR_star_octree::make_input(points, tetrahedra),
+                                        CGAL::PR_star_octree::parameters::bucket_size(2));
 
   for (auto leaf : octree.leaves()) {
     const auto& node = octree.node(leaf);

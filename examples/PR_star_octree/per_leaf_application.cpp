@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
             mesh.tetrahedra.push_back(t);
           }
   }
-  const Octree tree(PSO::make_input(mesh), 50);
+  const Octree tree(PSO::make_input(mesh), CGAL::PR_star_octree::parameters::bucket_size(50));
   const std::size_t nv = mesh.points.size();
   std::vector<std::size_t> valence(nv);
   std::vector<double> volume(nv);

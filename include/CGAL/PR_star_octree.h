@@ -143,18 +143,46 @@ public:
     build_in_place<CGAL::Parallel_if_available_tag>();
   }
 
-  /// Builds the PR-star octree of `input` (copied, as above) with named parameters:
-  /// - `bucket_size` (default 50), `maximum_depth` (default 32), `geom_traits` (default `Geom_traits()`);
-  /// - `vertex_permutation(bool)` (default `true`): whether the new -> original vertex numbering is
-  ///   kept (one index per vertex; without it the octree's numbering stands for the user's, see
-  ///   `has_vertex_permutation()`);
-  /// - `tetrahedron_permutation(bool)` (default `true`): whether the new -> original tetrahedron
-  ///   numbering is kept (one index per tetrahedron; without it `original_tetrahedron()` is not
-  ///   available, `original_tetrahedron_vertices()` and everything per vertex still are);
-  /// - `concurrency_tag(tag)` (default `CGAL::Parallel_if_available_tag()`): `CGAL::Parallel_tag`
-  ///   builds with several threads (TBB), `CGAL::Sequential_tag` with one; the octree is the same.
+  /// Builds the PR-star octree of `input` (copied, as above) with named parameters.
   ///
-  /// See `CGAL::PR_star_octree::parameters`.
+  /// \param input the mesh
+  /// \param np an optional sequence of named parameters among the ones listed below (see
+  ///        `CGAL::PR_star_octree::parameters`)
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{bucket_size}
+  ///     \cgalParamDescription{the bucket threshold `k_v` (at least 1), or `infinite_bucket_size`}
+  ///     \cgalParamType{`std::size_t`}
+  ///     \cgalParamDefault{`default_bucket_size` (50)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{maximum_depth}
+  ///     \cgalParamDescription{the depth bound that stops splitting (duplicate or extremely close points)}
+  ///     \cgalParamType{`std::size_t`}
+  ///     \cgalParamDefault{`default_max_depth` (32)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{geom_traits}
+  ///     \cgalParamDescription{an instance of the geometric traits class}
+  ///     \cgalParamType{`GeomTraits`}
+  ///     \cgalParamDefault{`GeomTraits()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_permutation}
+  ///     \cgalParamDescription{whether the new -> original vertex numbering is kept (one index per vertex; without it the octree's numbering stands for the user's, see `has_vertex_permutation()`)}
+  ///     \cgalParamType{`bool`}
+  ///     \cgalParamDefault{`true`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{tetrahedron_permutation}
+  ///     \cgalParamDescription{whether the new -> original tetrahedron numbering is kept (one index per tetrahedron; without it `original_tetrahedron()` is not available, `original_tetrahedron_vertices()` and everything per vertex still are)}
+  ///     \cgalParamType{`bool`}
+  ///     \cgalParamDefault{`true`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{concurrency_tag}
+  ///     \cgalParamDescription{`CGAL::Parallel_tag` builds with several threads (TBB), `CGAL::Sequential_tag` with one; the octree is the same.  (A constructor cannot take an explicit template argument: this is how the construction gets the `ConcurrencyTag` that the algorithms take as their first template parameter.)}
+  ///     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`}
+  ///     \cgalParamDefault{`CGAL::Parallel_if_available_tag()`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
+  /// \throws std::invalid_argument as the other constructor
   template <class InputMesh, class T, class Tag, class Base>
   PR_star_octree_3(const InputMesh& input, const CGAL::Named_function_parameters<T, Tag, Base>& np)
       : gt_(parameters::choose_parameter(parameters::get_parameter(np, internal_np::geom_traits),

@@ -167,7 +167,7 @@ void check_mesh(const Mesh& m, const std::vector<double>& values, const std::vec
                 const std::string& name) {
   CHECK_EQUAL(expected.size(), m.points.size());
   for (std::size_t kv : {std::size_t(1), std::size_t(2), Octree::infinite_bucket_size}) {
-    const Octree tree(CGAL::PR_star_octree::make_input(m), kv);
+    const Octree tree(CGAL::PR_star_octree::make_input(m), CGAL::PR_star_octree::parameters::bucket_size(kv));
     const auto all = library_curvature(tree, values);
     CHECK_EQUAL(all.size(), m.points.size());
     for (std::size_t v = 0; v < std::min(all.size(), expected.size()); ++v) {
@@ -252,7 +252,8 @@ void test_regular_tetrahedron() {
   for (auto& x : e) x = {corner, corner, Vertex_type::BOUNDARY};
   check_mesh(m, field(m, zero), e, "regular tetrahedron, f = 0");
   // Every corner is a boundary corner: domain curvature 2 pi - (3 acos(1/3) - pi) = 3 pi - 3 acos(1/3).
-  const Octree tree(CGAL::PR_star_octree::make_input(m), Octree::infinite_bucket_size);
+  const Octree tree(CGAL::PR_star_octree::make_input(m),
+                    CGAL::PR_star_octree::parameters::bucket_size(Octree::infinite_bucket_size));
   const auto c = library_curvature(tree, field(m, zero));
   for (const auto& x : c) {
     CHECK_CLOSE(x.domain_curvature, 3 * pi - 3 * std::acos(1.0 / 3.0), rel);
@@ -270,7 +271,7 @@ void test_cube() {
   // domain curvature 2 pi - pi / 2.
   const Mesh m = cube_grid(1);
   CHECK_EQUAL(m.tetrahedra.size(), std::size_t(6));
-  const Octree tree(CGAL::PR_star_octree::make_input(m), 1);
+  const Octree tree(CGAL::PR_star_octree::make_input(m), CGAL::PR_star_octree::parameters::bucket_size(1));
   const auto c = library_curvature(tree, field(m, zero));
   CHECK_EQUAL(c.size(), std::size_t(8));
   for (const auto& x : c) {
@@ -319,7 +320,8 @@ void test_cube_grid() {
     }
     const std::string name = moved ? "2x2x2 cubes, centre moved" : "2x2x2 cubes";
     for (std::size_t kv : {std::size_t(1), Octree::infinite_bucket_size}) {
-      const Octree tree(CGAL::PR_star_octree::make_input(m), kv);
+      const Octree tree(CGAL::PR_star_octree::make_input(m),
+                        CGAL::PR_star_octree::parameters::bucket_size(kv));
       const auto lin = library_curvature(tree, field(m, linear));
       CHECK_EQUAL(lin[centre].type, Vertex_type::INTERIOR);
       CHECK_CLOSE(lin[centre].solid_angle_sum_3, 4 * pi, rel);
@@ -361,7 +363,8 @@ void test_octahedron() {
     const auto e = expected_by_girard(m, values);
     CHECK_CLOSE(e[0].s4, 8 * by_excess, rel);
     for (std::size_t kv : {std::size_t(1), Octree::infinite_bucket_size}) {
-      const Octree tree(CGAL::PR_star_octree::make_input(m), kv);
+      const Octree tree(CGAL::PR_star_octree::make_input(m),
+                        CGAL::PR_star_octree::parameters::bucket_size(kv));
       const auto got = library_curvature(tree, values);
       const prstar_test::Failure_context context("octahedron, f = " + std::to_string(c) + " |x|");
       CHECK_EQUAL(got[0].type, Vertex_type::INTERIOR);

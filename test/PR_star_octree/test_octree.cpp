@@ -501,7 +501,9 @@ void test_errors() {
   CHECK_THROWS(std::invalid_argument, "tetrahedron 1 lists vertex 1 twice",
                (void)Tree(CGAL::PR_star_octree::make_input(pts, twice)));
   std::vector<std::array<int, 4>> ok = {{0, 1, 2, 3}};
-  CHECK_THROWS(std::invalid_argument, "at least 1", (void)Tree(CGAL::PR_star_octree::make_input(pts, ok), 0));
+  CHECK_THROWS(std::invalid_argument, "at least 1",
+               (void)Tree(CGAL::PR_star_octree::make_input(pts, ok),
+                          CGAL::PR_star_octree::parameters::bucket_size(0)));
   std::vector<Point> bad = pts;
   bad[2] = Point(0, std::nan(""), 0);
   CHECK_THROWS(std::invalid_argument, "vertex 2 has a non-finite coordinate",
@@ -603,7 +605,8 @@ int main(int argc, char** argv) {
       for (std::size_t kv : {std::size_t(3), std::size_t(20), std::size_t(200)})
         check_shuffle_invariance(mesh, kv, std::string(name) + " k_v=" + std::to_string(kv));
       if (std::string(name) == "spx_zsweep.off") {
-        CGAL::PR_star_octree_3<> t(CGAL::PR_star_octree::make_input(mesh), 20);
+        CGAL::PR_star_octree_3<> t(CGAL::PR_star_octree::make_input(mesh),
+                                   CGAL::PR_star_octree::parameters::bucket_size(20));
         // The data README: 12,924 of the 12,936 tets are listed with negative orientation.
         CHECK_EQUAL(t.statistics().reoriented_tetrahedra, std::size_t(12924));
         CHECK(t.has_scalar_field());

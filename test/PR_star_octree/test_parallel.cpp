@@ -46,7 +46,7 @@ bool same_bits(double a, double b) {
 
 void compare(const Mesh& mesh, std::size_t kv, const std::string& what) {
   prstar_test::Failure_context context(what + " k_v " + std::to_string(kv));
-  const Octree tree(PSO::make_input(mesh), kv);
+  const Octree tree(PSO::make_input(mesh), CGAL::PR_star_octree::parameters::bucket_size(kv));
   const std::size_t nv = mesh.points.size();
 
   // Boundary.
@@ -126,7 +126,7 @@ void compare(const Mesh& mesh, std::size_t kv, const std::string& what) {
 // classification (`Vertex_classifier::classify()`, one `Vertex_link` per star).
 void check_executor(const Mesh& mesh, std::size_t kv, const std::string& what) {
   prstar_test::Failure_context context(what + " executor k_v " + std::to_string(kv));
-  const Octree tree(PSO::make_input(mesh), kv);
+  const Octree tree(PSO::make_input(mesh), CGAL::PR_star_octree::parameters::bucket_size(kv));
   using Local = PSO::Leaf_topology<Octree>;
   // Per leaf: its node, the number of owned edges, and the checked and unchecked link types.
   struct Leaf_record {

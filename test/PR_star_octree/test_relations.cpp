@@ -373,7 +373,7 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
     for (const auto& f : truth.faces)
       if (f.second.size() == 1) boundary_face_tets.insert(f.second[0]);
     for (std::size_t kv : {std::size_t(3), std::size_t(64), Octree::infinite_bucket_size}) {
-      Octree tree(CGAL::PR_star_octree::make_input(mesh), kv);
+      Octree tree(CGAL::PR_star_octree::make_input(mesh), CGAL::PR_star_octree::parameters::bucket_size(kv));
       const std::size_t n = mesh.points.size();
       // Everything below is in the user's numbering (property maps keyed by the input order).
       std::vector<Vertex_type> types(n, Vertex_type::NONMANIFOLD);
@@ -478,7 +478,7 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
   }
 
   for (std::size_t kv : kvs) {
-    Octree tree(CGAL::PR_star_octree::make_input(mesh), kv);
+    Octree tree(CGAL::PR_star_octree::make_input(mesh), CGAL::PR_star_octree::parameters::bucket_size(kv));
     check_random_access(tree, truth);
     auto orig_v = [&](Index v) { return tree.original_vertex(v); };
     auto orig_t = [&](Index t) { return tree.original_tetrahedron(t); };
@@ -637,7 +637,7 @@ int main(int argc, char** argv) {
     cube.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
     cube.tetrahedra = {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
     for (std::size_t kv : kvs) {
-      Octree tree(CGAL::PR_star_octree::make_input(cube), kv);
+      Octree tree(CGAL::PR_star_octree::make_input(cube), CGAL::PR_star_octree::parameters::bucket_size(kv));
       const auto c = CGAL::PR_star_octree::count_simplices(tree);
       CHECK_EQUAL(c.vertices, std::size_t(8));
       CHECK_EQUAL(c.edges, std::size_t(19));

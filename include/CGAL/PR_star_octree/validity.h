@@ -191,8 +191,8 @@ Validity_result check_validity(const PointRange& points, const TetrahedronRange&
                                const NP& np = parameters::default_values()) {
   const PR_star_octree_3<> tree(
       make_input(points, tetrahedra),
-      parameters::choose_parameter(parameters::get_parameter(np, internal_np::bucket_size),
-                                   PR_star_octree_3<>::default_bucket_size));
+      parameters::bucket_size(parameters::choose_parameter(
+          parameters::get_parameter(np, internal_np::bucket_size), PR_star_octree_3<>::default_bucket_size)));
   return check_validity(tree, np);
 }
 

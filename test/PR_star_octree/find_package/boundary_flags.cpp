@@ -23,7 +23,7 @@ int main() {
     tetrahedra.push_back({0, 1 + f[0], 1 + f[2], 1 + f[3]});
   }
 
-  CGAL::PR_star_octree_3<> tree(PSO::make_input(points, tetrahedra), /* k_v = */ 2);
+  CGAL::PR_star_octree_3<> tree(PSO::make_input(points, tetrahedra), PSO::parameters::bucket_size(2));
   std::vector<PSO::Vertex_type> type(points.size()); // in the input numbering
   const auto counts = PSO::compute_boundary(tree, CGAL::make_property_map(type));
 
