@@ -21,11 +21,13 @@
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
 #include <set>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -500,6 +502,81 @@ void test_only_features_refuse() {
   CHECK(lost.hausdorff() > 0.1);
 }
 
+// %CGAL's own constraint maps (`CGAL::parameters::vertex_is_constrained_map`,
+// `edge_is_constrained_map`, which the package's `parameters` namespace now is) take effect: on the
+// flat top face of a cube, the surface edge (r, k) is the only one under the length bound; without
+// a map k is removed into r; with k constrained, k survives (r goes instead); with the edge (r, k)
+// constrained, both survive.  Then the policies: a filter, a cost and a visitor of the user's.
+struct Count_visitor : P::Simplification_visitor_base {
+  std::size_t rounds = 0, collapses = 0, refused = 0;
+  void on_round_started(std::size_t, std::size_t, std::size_t) { ++rounds; }
+  template <class Profile>
+  void on_collapse(const Profile&) {
+    ++collapses;
+  }
+  template <class Profile>
+  void on_refused(const Profile&, P::Collapse_refusal) {
+    ++refused;
+  }
+};
+
+void test_cgal_constraint_maps_and_policies() {
+  Lattice l = kuhn_lattice(4);
+  const std::uint32_t r = l.index(2, 2, 4), k = l.index(3, 2, 4);
+  l.points[k] = Point(2.9, 2, 4);
+  const auto input = P::make_input(l.points, l.tets);
+  auto kept = [](const auto& res, std::size_t v) {
+    return std::find(res.input_vertex.begin(), res.input_vertex.end(), v) != res.input_vertex.end();
+  };
+  const auto free = P::simplify(input, params::max_edge_length(0.95).quality_floor(0.0));
+  CHECK(free.statistics.removed_tetrahedra > 0);
+  CHECK(kept(free, r));
+  CHECK(!kept(free, k));
+
+  std::map<std::size_t, bool> corner{{k, true}};
+  const auto vertex_map = boost::make_assoc_property_map(corner);
+  // the package's name is CGAL's: same function, same tag
+  static_assert(std::is_same<decltype(params::vertex_is_constrained_map(vertex_map)),
+                             decltype(CGAL::parameters::vertex_is_constrained_map(vertex_map))>::value,
+                "vertex_is_constrained_map is CGAL's");
+  // (CGAL's parameter returns CGAL's chain: the package's parameters come first)
+  const auto by_vertex = P::simplify(
+      input, params::max_edge_length(0.95).quality_floor(0.0).vertex_is_constrained_map(vertex_map));
+  CHECK(by_vertex.statistics.removed_tetrahedra > 0);
+  CHECK(kept(by_vertex, k));
+  CHECK(!kept(by_vertex, r));
+
+  std::map<std::pair<std::size_t, std::size_t>, bool> feature{{{(std::min)(r, k), (std::max)(r, k)}, true}};
+  const auto edge_map = boost::make_assoc_property_map(feature);
+  static_assert(std::is_same<decltype(params::edge_is_constrained_map(edge_map)),
+                             decltype(CGAL::parameters::edge_is_constrained_map(edge_map))>::value,
+                "edge_is_constrained_map is CGAL's");
+  const auto by_edge =
+      P::simplify(input, params::max_edge_length(0.95).quality_floor(0.0).edge_is_constrained_map(edge_map));
+  CHECK_EQUAL(by_edge.statistics.removed_tetrahedra, std::size_t(0));
+  CHECK(kept(by_edge, r) && kept(by_edge, k));
+
+  // A filter that refuses everything: nothing removed, every refusal counted as the filter's.
+  const auto refuse_all = [](const auto&) { return P::Collapse_refusal::FILTER; };
+  const auto filtered =
+      P::simplify(input, params::max_edge_length(0.95).quality_floor(0.0).filter(refuse_all));
+  CHECK_EQUAL(filtered.statistics.removed_tetrahedra, std::size_t(0));
+  CHECK(filtered.statistics.blocked.filter >= 1);
+  // A visitor (by reference) sees every collapse and refusal; a cost of the user's is used.
+  Count_visitor visitor;
+  std::size_t costs = 0;
+  const auto cost = [&costs](const auto& e) {
+    ++costs;
+    return -e.quadric_error(e.coordinates(e.v0())); // (0: no quadrics without the quadric options)
+  };
+  const auto half = P::simplify(P::make_input(l.points, l.tets),
+                                params::target_fraction(0.3).get_cost(cost).visitor(std::ref(visitor)));
+  CHECK(costs > 0);
+  CHECK_EQUAL(visitor.collapses, half.statistics.collapses);
+  CHECK_EQUAL(visitor.rounds, half.statistics.rounds);
+  CHECK(visitor.refused > 0);
+}
+
 // Only the error bound: the top-centre vertex r of the cube is raised by 0.3 (a smooth bump: its
 // triangles bend by less than 40 degrees) and its neighbour k on the top face pulled towards it,
 // so that (r, k) is the only edge shorter than 0.9.  Flattening the bump moves the surface by
@@ -685,6 +762,7 @@ int main(int argc, char** argv) {
   test_only_quality_floor_refuses();
   test_only_features_refuse();
   test_only_error_bound_refuses();
+  test_cgal_constraint_maps_and_policies();
 
   for (const char* name : {"sphere.mesh", "torus.mesh"})
     if (const auto file = data.generated_file(name)) test_mesh(*file, true);

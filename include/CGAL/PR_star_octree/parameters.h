@@ -59,6 +59,10 @@ CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_TAG)
 /// \endcode
 /// The package's own parameters chain with each other and are followed by %CGAL's (`geom_traits`,
 /// `verbose`, ...); a chain may also start with a %CGAL parameter when no package parameter is needed.
+/// A %CGAL parameter returns %CGAL's chain, on which the package's parameters are no member functions:
+/// put them first.  `simplify()` reads %CGAL's own `vertex_is_constrained_map`,
+/// `edge_is_constrained_map`, `get_cost`, `get_placement`, `filter` and `visitor`, e.g.
+/// `params::target_fraction(0.5).bucket_size(100).edge_is_constrained_map(m).visitor(std::ref(v))`.
 ///
 /// | parameter | used by | default |
 /// |---|---|---|
