@@ -157,6 +157,25 @@ file(READ ${WORK}/lattice_threads2.csv csv2)
 if(NOT csv1 STREQUAL csv2 OR NOT stats_threads1 STREQUAL stats_threads2)
   message(SEND_ERROR "--threads 1 and --threads 2 gave different results")
 endif()
+# boundary -o and curvature -o (issue 17) write the mesh the octree holds, not a copy of the input:
+# the vertices in the input's order, the tetrahedra in the octree's (each as the input gives it),
+# the input's point arrays first.  Read back, each output gives the input's per-vertex CSV
+# (vertex order, coordinates, field, vertex types and distortions: the same stars), in every
+# format that keeps point data, also with k_v = inf (one leaf).
+run(0 "" "" curvature ${WORK}/lattice.vtu --kv 5 --csv ${WORK}/lattice_in.csv)
+file(READ ${WORK}/lattice_in.csv csv_in)
+foreach(out boundary_order.vtu boundary_order.vtk boundary_order.node curvature_order.vtu curvature_order.vtk)
+  if(out MATCHES "^boundary")
+    run(0 "" "" boundary ${WORK}/lattice.vtu --kv 7 -o ${WORK}/${out} --quiet)
+  else()
+    run(0 "" "" curvature ${WORK}/lattice.vtu --kv inf -o ${WORK}/${out} --quiet)
+  endif()
+  run(0 "" "" curvature ${WORK}/${out} --kv 5 --csv ${WORK}/${out}.csv --quiet)
+  file(READ ${WORK}/${out}.csv csv_out)
+  if(NOT csv_out STREQUAL csv_in)
+    message(SEND_ERROR "${out}: not the input's vertices, field or stars (${WORK}/${out}.csv, ${WORK}/lattice_in.csv)")
+  endif()
+endforeach()
 run(2 "" "--cells must be" generate --shape lattice --cells 0 -o ${WORK}/lattice0.vtu)
 run(2 "" "must be a .vtu" generate --shape lattice --cells 3 -o ${WORK}/lattice3.mesh)
 run(2 "" "--cells only" generate --shape lattice --cells 3 --cell-size 0.1 -o ${WORK}/lattice3.vtu)

@@ -5,12 +5,13 @@
 // Section 7).
 
 #include "commands.h"
+#include "octree_mesh_view.h"
 #include "vertex_code.h"
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/boundary.h>
 #include <CGAL/PR_star_octree/parameters.h>
-#include <CGAL/property_map.h>
+#include <boost/property_map/property_map.hpp>
 
 #include <chrono>
 #include <iostream>
@@ -23,31 +24,51 @@ using Octree = CGAL::PR_star_octree_3<>;
 using CGAL::PR_star_octree::Vertex_type;
 namespace params = CGAL::PR_star_octree::parameters;
 
+// Writes the code of each vertex type (`vertex_type_code()`) into `codes[v]`, v in the user's
+// numbering; a null `codes` writes nothing (only the counts are wanted).
+struct Vertex_code_map {
+  using key_type = std::size_t;
+  using value_type = Vertex_type;
+  using reference = value_type;
+  using category = boost::writable_property_map_tag;
+  double* codes;
+  friend void put(const Vertex_code_map& m, std::size_t v, Vertex_type t) {
+    if (m.codes) m.codes[v] = vertex_type_code(t);
+  }
+};
+
 int run_boundary(const Options& o) {
   const std::string& input = o.input();
   const std::size_t kv = o.kv();
   const std::string out = o.output();
   Progress_bar progress(o.show_progress());
-  Mesh mesh = read_mesh(input, progress); // written back with the computed point arrays
+  Mesh mesh = read_mesh(input, progress);
+  // The octree takes the mesh over (no second copy of V and T).  Without an output to write it keeps
+  // no permutation (only counts are reported); with one, the vertex permutation (4 bytes a vertex)
+  // gives the output the user's vertex order, and the tetrahedron permutation, only when the mesh
+  // has cell data, puts those arrays in the octree's order of the tetrahedra (the one written).
+  Mesh_arrays arrays(mesh); // point and cell data, label names: kept aside in the user's order,
+  if (out.empty()) arrays = Mesh_arrays(); // or dropped when not written
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
-  // Without an output to write, the octree takes the mesh over (no second copy of V and T) and
-  // keeps no permutation (only counts are reported).
-  const auto np = params::bucket_size(kv).maximum_depth(o.max_depth()).tetrahedron_permutation(false);
-  const Octree tree = out.empty() ? Octree(std::move(mesh), np.vertex_permutation(false))
-                                  : Octree(CGAL::PR_star_octree::make_input(mesh), np);
+  const auto np = params::bucket_size(kv).maximum_depth(o.max_depth());
+  const Octree tree(
+      std::move(mesh),
+      np.vertex_permutation(!out.empty()).tetrahedron_permutation(!out.empty() && !arrays.cell_data.empty()));
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("classifying the vertices");
-  std::vector<Vertex_type> types(nv, Vertex_type::UNREFERENCED); // the user's numbering
+  // the output's array, in the user's numbering (3: in no tetrahedron), written directly
+  std::vector<CGAL::PR_star_octree::Point_data_array> result;
+  if (!out.empty()) result.push_back({"boundary", std::vector<double>(nv, 3.)});
   const CGAL::PR_star_octree::Boundary_counts b = CGAL::PR_star_octree::compute_boundary(
-      tree, CGAL::make_property_map(types), params::progress(progress.callback()));
+      tree, Vertex_code_map{result.empty() ? nullptr : result[0].values.data()},
+      params::progress(progress.callback()));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
   if (!out.empty()) {
     progress.phase("writing " + out);
-    CGAL::PR_star_octree::Point_data_array a{"boundary", std::vector<double>(nv)};
-    for (std::size_t v = 0; v < types.size(); ++v) a.values[v] = vertex_type_code(types[v]);
-    write_mesh_with_point_data(out, mesh, {a});
+    Octree_mesh_view<Octree> view(tree, std::move(arrays));
+    write_octree_mesh(out, view, result);
     progress.finish();
   }
   if (o.json()) {

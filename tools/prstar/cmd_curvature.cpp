@@ -4,6 +4,7 @@
 // prstar curvature: discrete distortion of a scalar field at every vertex (paper Section 8).
 
 #include "commands.h"
+#include "octree_mesh_view.h"
 #include "vertex_code.h"
 
 #include <CGAL/PR_star_octree.h>
@@ -11,9 +12,11 @@
 #include <CGAL/PR_star_octree/parameters.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <limits>
 
@@ -52,17 +55,22 @@ int run_curvature(const Options& o) {
   const std::size_t kv = o.kv();
   const std::string out = o.output(), csv = o.output("--csv");
   Progress_bar progress(o.show_progress());
-  Mesh mesh = read_mesh(input, progress); // written back with the computed point arrays
+  Mesh mesh = read_mesh(input, progress);
 
-  // The field: a coordinate, or a point-data array made the mesh's first one (the octree's scalar
-  // field).  Without an output to write, the octree takes the mesh over (lean construction: no
-  // second copy of V, T and the field), dropping the other arrays.
+  // The octree takes the mesh over (no second copy of V and T).  The field: a coordinate, or a
+  // point-data array.  Without a file to write (lean), that array alone goes into the octree as
+  // its scalar field and no permutation is kept.  With one, the mesh's arrays are kept aside in the
+  // user's order (the field read from there), and the octree keeps the vertex permutation (the
+  // files are in the user's vertex order) and, only when the mesh has cell data, the tetrahedron
+  // permutation (those arrays follow the octree's order of the tetrahedra, the one written).
   std::string field_name = o.get("--field");
   const bool lean = out.empty() && csv.empty();
   const int axis = (field_name == "x" || field_name == "y" || field_name == "z") ? field_name[0] - 'x' : -1;
-  std::size_t field_index = 0; // not lean: the field is read in the user's order from the mesh
+  Mesh_arrays arrays;
+  if (!lean) arrays = Mesh_arrays(mesh);
+  auto& pd = lean ? mesh.point_data : arrays.point_data;
+  const CGAL::PR_star_octree::Point_data_array* field = nullptr; // not lean: in the user's order
   if (axis < 0) {
-    auto& pd = mesh.point_data;
     auto it = field_name.empty()
                   ? pd.begin()
                   : std::find_if(pd.begin(), pd.end(), [&](const auto& a) { return a.name == field_name; });
@@ -84,27 +92,28 @@ int run_curvature(const Options& o) {
       std::rotate(pd.begin(), it, it + 1);
       pd.resize(1);
     } else {
-      field_index = static_cast<std::size_t>(it - pd.begin());
+      field = &*it;
     }
-  } else if (lean) {
-    mesh.point_data.clear();
+  }
+  if (lean) {
+    if (axis >= 0) mesh.point_data.clear();
+    mesh.cell_data.clear();
   }
 
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
-  const auto np = params::bucket_size(kv).maximum_depth(o.max_depth()).tetrahedron_permutation(false);
-  const Octree tree = lean ? Octree(std::move(mesh), np.vertex_permutation(false))
-                           : Octree(CGAL::PR_star_octree::make_input(mesh), np);
+  const auto np = params::bucket_size(kv).maximum_depth(o.max_depth());
+  const Octree tree(std::move(mesh), np.vertex_permutation(!lean).tetrahedron_permutation(
+                                         !out.empty() && !arrays.cell_data.empty()));
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("computing the distortion");
-  Curvature_arrays curv(nv, !lean); // the user's numbering
-  if (axis < 0 && lean)
-    CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::scalar_field_map(tree), curv.map(),
+  Curvature_arrays curv(nv, !out.empty()); // the user's numbering
+  if (field)
+    CGAL::PR_star_octree::compute_curvature(tree, CGAL::make_property_map(field->values), curv.map(),
                                             params::progress(progress.callback()));
   else if (axis < 0)
-    CGAL::PR_star_octree::compute_curvature(tree,
-                                            CGAL::make_property_map(mesh.point_data[field_index].values),
-                                            curv.map(), params::progress(progress.callback()));
+    CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::scalar_field_map(tree), curv.map(),
+                                            params::progress(progress.callback()));
   else
     CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::coordinate_field_map(tree, axis),
                                             curv.map(), params::progress(progress.callback()));
@@ -127,35 +136,39 @@ int run_curvature(const Options& o) {
       ++dn;
     }
   }
-  CGAL::PR_star_octree::Point_data_array boundary{"boundary", std::vector<double>(lean ? 0 : nv)},
-      distortion{"distortion", std::move(curv.distortion)},
-      domain{"domain_curvature", std::move(curv.domain)};
-  for (std::size_t v = 0; v < boundary.values.size(); ++v) boundary.values[v] = curv.code[v];
-  if (!out.empty()) {
-    progress.phase("writing " + out);
-    // VTU point data must be finite (our reader refuses NaN, and so do some of ParaView's): the
-    // undefined values of non-manifold vertices are written as 0 there, flagged by boundary = 2.
-    auto finite = [](CGAL::PR_star_octree::Point_data_array a) {
-      for (double& x : a.values)
-        if (!std::isfinite(x)) x = 0;
-      return a;
-    };
-    write_mesh_with_point_data(out, mesh, {boundary, finite(distortion), finite(domain)});
-    progress.finish();
-  }
-  if (!csv.empty()) {
-    progress.phase("writing " + csv);
-    write_through_temporary(csv, [&](const std::string& tmp) {
-      std::ofstream f(tmp);
-      f << std::setprecision(std::numeric_limits<double>::max_digits10);
-      f << "vertex,x,y,z,boundary,distortion\n";
-      for (std::size_t v = 0; v < nv; ++v)
-        f << v << ',' << mesh.points[v].x() << ',' << mesh.points[v].y() << ',' << mesh.points[v].z() << ','
-          << static_cast<int>(boundary.values[v]) << ',' << distortion.values[v] << '\n';
-      f.flush();
-      if (!f) throw std::runtime_error(csv + ": cannot write the output file");
-    });
-    progress.finish();
+  if (!lean) {
+    // the mesh of the octree in the user's vertex order (its points for the CSV), with its arrays
+    Octree_mesh_view<Octree> view(tree, std::move(arrays));
+    if (!csv.empty()) {
+      progress.phase("writing " + csv);
+      write_through_temporary(csv, [&](const std::string& tmp) {
+        std::ofstream f(tmp);
+        f << std::setprecision(std::numeric_limits<double>::max_digits10);
+        f << "vertex,x,y,z,boundary,distortion\n";
+        for (std::size_t v = 0; v < nv; ++v) {
+          const auto p = view.points[v];
+          f << v << ',' << p.x() << ',' << p.y() << ',' << p.z() << ',' << static_cast<int>(curv.code[v])
+            << ',' << curv.distortion[v] << '\n';
+        }
+        f.flush();
+        if (!f) throw std::runtime_error(csv + ": cannot write the output file");
+      });
+      progress.finish();
+    }
+    if (!out.empty()) {
+      progress.phase("writing " + out);
+      // VTU point data must be finite (our reader refuses NaN, and so do some of ParaView's): the
+      // undefined values of non-manifold vertices are written as 0 there, flagged by boundary = 2.
+      std::vector<CGAL::PR_star_octree::Point_data_array> result(3);
+      result[0] = {"boundary", std::vector<double>(curv.code.begin(), curv.code.end())};
+      result[1] = {"distortion", std::move(curv.distortion)};
+      result[2] = {"domain_curvature", std::move(curv.domain)};
+      for (auto& a : result)
+        for (double& x : a.values)
+          if (!std::isfinite(x)) x = 0;
+      write_octree_mesh(out, view, result);
+      progress.finish();
+    }
   }
   if (o.json()) {
     Json j;
