@@ -3,12 +3,13 @@
 # A crash does not end a target's time: the finding is kept in build/artifacts/<reader>/ and the
 # target restarts on its (growing) corpus for the remaining time.  Logs: build/logs/<reader>.log.
 # Format keywords come from dict/<reader>.dict.
-# Usage: bash fuzz/run_all.sh [reader...]   (after bash fuzz/build.sh)
+# Usage: bash fuzz/run_all.sh [key...]   (after bash fuzz/build.sh; default: every format of the
+# format table, build/formats.txt)
 set -uo pipefail
 cd "$(dirname "$0")/build"
 per=${SECONDS_PER_TARGET:-600}
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(medit tetgen vtk vtu tet_off msh meshb)
+[ ${#targets[@]} -eq 0 ] && mapfile -t targets < formats.txt
 mkdir -p logs
 for t in "${targets[@]}"; do
   mkdir -p "artifacts/$t" "corpus/$t"

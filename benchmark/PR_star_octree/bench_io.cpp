@@ -39,7 +39,7 @@ Mesh lattice(std::size_t n) {
   Mesh m;
   const std::size_t side = n + 1;
   m.points.reserve(side * side * side);
-  CGAL::PR_star_octree::Point_data_array scalar{"scalar", {}};
+  CGAL::PR_star_octree::Data_array scalar{"scalar", {}};
   scalar.values.reserve(side * side * side);
   for (std::size_t z = 0; z < side; ++z)
     for (std::size_t y = 0; y < side; ++y)
@@ -119,12 +119,10 @@ int text_formats(std::size_t cells, int reps, bool keep, const std::string& dir)
     IO::write_medit(files[0].name, m);
     IO::write_tetgen(files[1].name, m);
     IO::write_vtk(files[2].name, m);
-    IO::Gmsh_write_options o22;
-    o22.version = IO::Gmsh_version::msh22;
-    IO::write_gmsh(files[3].name, m, o22);
+    IO::write_gmsh(files[3].name, m, CGAL::PR_star_octree::parameters::format_version(2.2));
     IO::write_gmsh(files[4].name, m);
     IO::write_tet_off(files[5].name, m);
-    IO::write_vtu(files[6].name, m, {}, false);
+    IO::write_vtu(files[6].name, m, {}, CGAL::parameters::use_binary_mode(false));
   }
   std::cout << "| file | format | vertices | tetrahedra | file MB | read s (best of " << reps
             << ") | read CPU s | MB/s of file text (wall) | MB/s (CPU) | peak RSS MB |\n"
@@ -201,9 +199,7 @@ int main(int argc, char** argv) {
     CGAL::PR_star_octree::IO::write_vtu(vtu, m);
     write_vtu_s = prstar_bench::now() - t;
     t = prstar_bench::now();
-    CGAL::PR_star_octree::IO::Gmsh_write_options o;
-    o.binary = true;
-    CGAL::PR_star_octree::IO::write_gmsh(msh, m, o);
+    CGAL::PR_star_octree::IO::write_gmsh(msh, m, CGAL::parameters::use_binary_mode(true));
     write_msh_s = prstar_bench::now() - t;
   }
   const double vtu_bytes = 32.0 * double(nv) + (32.0 + 8 + 1 + 4) * double(nt);

@@ -9,7 +9,7 @@
 #     meshio (default VTU, which is zlib-compressed; legacy VTK binary and ASCII), on a grid with
 #     tetrahedra AND triangles and a hexahedron, are read by our code (`test_io_vtk --dump FILE`) with
 #     the exact counts, labels, point and cell data, and skipped cells;
-#  2. files our writers write (`test_io_vtk --convert IN OUT [ascii|binary]`) are read back by VTK and
+#  2. files our writers write (`test_io_vtk --convert IN OUT [ascii|binary|binary-none]`) are read back by VTK and
 #     meshio with the same counts, point data and labels;
 #  3. the shape measures of mesh_quality.h (`test_io_vtk --quality FILE`: smallest and largest
 #     dihedral angle, radius ratio of each tetrahedron) against VTK's vtkMeshQuality, on the reference
@@ -234,8 +234,8 @@ tets_only = {
     "label": label[is_tet].tolist(), "quality": float(quality[is_tet].sum()),
 }
 source = os.path.join(work, "vtk_zlib_appended_UInt64_Int64_LittleEndian.vtu")
-for out, mode in (("ours_default.vtu", None), ("ours_ascii.vtu", "ascii"), ("ours_ascii.vtk", None),
-                  ("ours_binary.vtk", "binary")):
+for out, mode in (("ours_default.vtu", None), ("ours_ascii.vtu", "ascii"), ("ours_raw.vtu", "binary-none"),
+                  ("ours_ascii.vtk", None), ("ours_binary.vtk", "binary")):
     path = os.path.join(work, out)
     r = subprocess.run([tool, "--convert", source, path] + ([mode] if mode else []), capture_output=True, text=True)
     check(r.returncode == 0, f"{out}: our writer failed: {r.stderr.strip()}")
@@ -246,6 +246,8 @@ for out, mode in (("ours_default.vtu", None), ("ours_ascii.vtu", "ascii"), ("our
     if out == "ours_default.vtu":
         check(b'compressor="vtkZLibDataCompressor"' in text and b'encoding="raw"' in text,
               f"{out}: not appended raw zlib")
+    if out == "ours_raw.vtu":
+        check(b"compressor=" not in text and b'encoding="raw"' in text, f"{out}: not appended raw uncompressed")
     if out == "ours_binary.vtk":
         check(b"\nBINARY\n" in text[:200], f"{out}: not a binary legacy file")
     # VTK

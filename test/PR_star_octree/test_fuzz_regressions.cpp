@@ -3,9 +3,10 @@
 //
 // Author(s): The PR-star octree project
 //
-// Replays the inputs kept from fuzzing (fuzz/, one libFuzzer target per reader): every file of
-// fuzz_regressions/<reader>/ is read with the stream form of that reader, exactly as the fuzz
-// target does (tetgen: the .node text, a NUL byte, the .ele text), and must either succeed or
+// Replays the inputs kept from fuzzing (fuzz/, one libFuzzer target per format of the format table
+// CGAL/PR_star_octree/IO/formats.h): every file of fuzz_regressions/<key>/ (but README.md) is read
+// with the stream reader of the format whose key is <key>, exactly as the fuzz target does
+// (tetgen: the .node text, a NUL byte, the .ele text), and must either succeed or
 // throw CGAL::PR_star_octree::IO::Read_error, within a time limit; a mesh that was read is then
 // given to PR_star_octree_3 (k_v = 4), which may only throw std::invalid_argument.  Crashes and
 // memory errors are caught by running this test under the sanitizers (scripts/test_sanitizers.sh).
@@ -45,36 +46,21 @@ namespace fs = std::filesystem;
 // even under ASan/UBSan on a loaded machine.
 static constexpr double seconds_per_file = 20.0;
 
-static void read_tetgen_split(std::istream& in, Mesh& m, const std::string& name) {
-  const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::size_t nul = all.find('\0');
-  std::istringstream node(all.substr(0, nul));
-  std::istringstream ele(nul == std::string::npos ? std::string() : all.substr(nul + 1));
-  IO::read_tetgen(node, ele, m, name + " (node)", name + " (ele)");
-}
-
 int main() {
   const char* env = std::getenv("PRSTAR_FUZZ_REGRESSIONS");
   const fs::path root = env ? env : PRSTAR_FUZZ_REGRESSIONS;
-  using Reader = std::function<void(std::istream&, Mesh&, const std::string&)>;
-  const std::map<std::string, Reader> readers = {
-      {"medit", [](std::istream& in, Mesh& m, const std::string& n) { IO::read_medit(in, m, n); }},
-      {"tetgen", read_tetgen_split},
-      {"vtk", [](std::istream& in, Mesh& m, const std::string& n) { IO::read_vtk(in, m, n); }},
-      {"vtu", [](std::istream& in, Mesh& m, const std::string& n) { IO::read_vtu(in, m, n); }},
-      {"tet_off", [](std::istream& in, Mesh& m, const std::string& n) { IO::read_tet_off(in, m, n); }}};
 
   CHECK_MSG(fs::is_directory(root), root << " is not a folder");
   int files = 0, read_ok = 0;
-  for (const auto& r : readers) {
-    const fs::path dir = root / r.first;
+  for (const auto& format : IO::mesh_formats<Mesh>) {
+    const fs::path dir = root / format.key;
     if (!fs::is_directory(dir)) {
-      prstar_test::skip("no regression input for the " + r.first + " reader");
+      prstar_test::skip(std::string("no regression input for the ") + format.name + " reader");
       continue;
     }
     std::vector<fs::path> paths;
     for (const auto& e : fs::directory_iterator(dir))
-      if (e.is_regular_file()) paths.push_back(e.path());
+      if (e.is_regular_file() && e.path().extension() != ".md") paths.push_back(e.path());
     std::sort(paths.begin(), paths.end());
     for (const fs::path& p : paths) {
       ++files;
@@ -84,7 +70,7 @@ int main() {
       CHECK_MSG(in.good(), "cannot open " << name);
       Mesh mesh;
       try {
-        r.second(in, mesh, name);
+        format.read_stream(in, mesh, name);
         ++read_ok;
         try {
           CGAL::PR_star_octree_3<> tree(CGAL::PR_star_octree::make_input(mesh), 4);

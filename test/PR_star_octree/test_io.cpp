@@ -538,7 +538,7 @@ static Mesh tricky_mesh() {
 
 static void test_round_trips() {
   const Mesh m = tricky_mesh();
-  const std::vector<CGAL::PR_star_octree::Point_data_array> extra = {{"extra", {9, 8, 7, 6, 1.0 / 9.0}}};
+  const std::vector<CGAL::PR_star_octree::Data_array> extra = {{"extra", {9, 8, 7, 6, 1.0 / 9.0}}};
 
   // Medit: geometry, tetrahedra and labels
   {
@@ -550,10 +550,14 @@ static void test_round_trips() {
     CHECK_EQUAL(r.tetrahedra, m.tetrahedra);
     CHECK_EQUAL(r.tetrahedron_labels, m.tetrahedron_labels);
   }
-  // VTU, ascii and binary: everything, plus the extra array
-  for (bool binary : {false, true}) {
-    const std::string f = (tmp / (binary ? "rtb.vtu" : "rta.vtu")).string();
-    IO::write_vtu(f, m, extra, binary);
+  // VTU, ascii, appended raw and appended zlib (when available): everything, plus the extra array
+  for (int how : {0, 1, 2}) {
+    if (how == 2 && !IO::internal::compression_available(IO::Compression::zlib)) continue;
+    const std::string f = (tmp / ("rt" + std::to_string(how) + ".vtu")).string();
+    IO::write_vtu(f, m, extra,
+                  CGAL::PR_star_octree::parameters::compression(how == 2 ? IO::Compression::zlib
+                                                                         : IO::Compression::none)
+                      .use_binary_mode(how != 0));
     Mesh r;
     IO::read_vtu(f, r);
     CHECK_EQUAL(r.points, m.points);
@@ -615,7 +619,8 @@ static void test_round_trips() {
   expect_write_error(
       __LINE__, [&] { IO::write_medit((tmp / "no_such_dir" / "x.mesh").string(), m); }, "cannot open");
   expect_write_error(
-      __LINE__, [&] { IO::write_tetrahedral_mesh((tmp / "x.ply").string(), m); }, ".mesh, .vtu");
+      __LINE__, [&] { IO::write_tetrahedral_mesh((tmp / "x.ply").string(), m); },
+      "supported are .vtu, .vtk, .node/.ele, .mesh, .meshb, .msh, .off/.ts");
   expect_write_error(
       __LINE__,
       [&] {
@@ -633,7 +638,8 @@ static void test_round_trips() {
         IO::is_writable_extension("x.node") && !IO::is_writable_extension("x.ply") &&
         !IO::is_writable_extension("x.vtu/y"));
   EXPECT_ERROR(put("mesh.xyz", "1"), read_any,
-               {"unknown file extension '.xyz'", ".mesh, .node/.ele, .vtk, .vtu"});
+               {"unknown file extension '.xyz'",
+                "supported are .vtu, .vtk, .node/.ele, .mesh, .meshb, .msh, .off/.ts"});
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -701,7 +707,7 @@ static void test_shared(const prstar_test::Data_folders& data) {
     CHECK_EQUAL(m.number_of_tetrahedra(), c.nt);
     CHECK_EQUAL((m.scalar_field() != nullptr), c.scalar);
     // a binary VTU round trip of the real mesh
-    IO::write_vtu((tmp / "real.vtu").string(), m, {}, true);
+    IO::write_vtu((tmp / "real.vtu").string(), m);
     Mesh r;
     IO::read_vtu((tmp / "real.vtu").string(), r);
     CHECK(r.points == m.points && r.tetrahedra == m.tetrahedra && r.point_data.size() == m.point_data.size());

@@ -54,6 +54,7 @@
 #include "test_harness.h"
 
 namespace IO = CGAL::PR_star_octree::IO;
+namespace NP = CGAL::PR_star_octree::parameters;
 using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
 namespace fs = std::filesystem;
 
@@ -101,7 +102,7 @@ static void dump(const Mesh& m, std::ostream& out) {
     out << (first ? "" : ", ") << json_string(std::to_string(kv.first)) << ": " << kv.second;
     first = false;
   }
-  const auto arrays = [&](const std::vector<CGAL::PR_star_octree::Point_data_array>& v) {
+  const auto arrays = [&](const std::vector<CGAL::PR_star_octree::Data_array>& v) {
     out << "{";
     bool f = true;
     for (const auto& a : v) {
@@ -719,7 +720,7 @@ static void test_vtu_writer() {
   m.cell_data.push_back({"quality", {}});
   for (std::size_t i = 0; i < m.tetrahedra.size(); ++i)
     m.cell_data.back().values.push_back(1.0 / double(i + 1));
-  const std::vector<CGAL::PR_star_octree::Point_data_array> extra = {
+  const std::vector<CGAL::PR_star_octree::Data_array> extra = {
       {"extra", std::vector<double>(m.points.size(), 2.5)}};
   struct Case {
     const char* name;
@@ -732,7 +733,11 @@ static void test_vtu_writer() {
       {"ascii.vtu",
        [&](const std::string& f) { IO::write_vtu(f, m, extra, CGAL::parameters::use_binary_mode(false)); },
        "format=\"ascii\""},
-      {"inline.vtu", [&](const std::string& f) { IO::write_vtu(f, m, extra, true); }, "format=\"binary\""},
+      {"raw.vtu",
+       [&](const std::string& f) {
+         IO::write_vtu(f, m, extra, NP::compression(IO::Compression::none).use_binary_mode(true));
+       },
+       "<AppendedData encoding=\"raw\">"},
       {"ext.vtu", [&](const std::string& f) { IO::write_tetrahedral_mesh(f, m); }, "format=\"appended\""}};
   for (const Case& c : cases) {
     prstar_test::Failure_context context(std::string("VTU writer ") + c.name);
@@ -830,9 +835,11 @@ int main(int argc, char** argv) {
     if (mode == "--convert" && (argc == 4 || argc == 5)) {
       Mesh m;
       IO::read_tetrahedral_mesh(argv[2], m);
-      if (argc == 5)
-        IO::write_tetrahedral_mesh(argv[3], m,
-                                   CGAL::parameters::use_binary_mode(std::string(argv[4]) == "binary"));
+      const std::string how = argc == 5 ? argv[4] : "";
+      if (how == "binary-none") // appended raw, uncompressed
+        IO::write_tetrahedral_mesh(argv[3], m, NP::compression(IO::Compression::none).use_binary_mode(true));
+      else if (argc == 5)
+        IO::write_tetrahedral_mesh(argv[3], m, CGAL::parameters::use_binary_mode(how == "binary"));
       else
         IO::write_tetrahedral_mesh(argv[3], m);
       return 0;

@@ -353,9 +353,23 @@ std::string Options::output(const std::string& option) const {
   return "";
 }
 
+std::string point_data_outputs() {
+  std::string r;
+  for (const auto& f : CGAL::PR_star_octree::IO::mesh_formats<>)
+    if (f.point_data_kept == CGAL::PR_star_octree::IO::Point_data_kept::all_arrays)
+      for (const char* e : f.extensions)
+        if (e != nullptr) r += (r.empty() ? "." : ",.") + std::string(e);
+  return r;
+}
+
 std::string mesh_formats() {
-  return std::string("Mesh files read: ") + CGAL::PR_star_octree::IO::readable_extensions() +
-         "\nMesh files written: " + CGAL::PR_star_octree::IO::writable_extensions() + "\n";
+  std::string r = "Mesh files, read and written, by extension:\n";
+  for (const auto& f : CGAL::PR_star_octree::IO::mesh_formats<>) {
+    std::string e = std::string(".") + f.extensions[0];
+    if (f.extensions[1] != nullptr) e += std::string("/.") + f.extensions[1];
+    r += "  " + e + std::string(e.size() < 12 ? 12 - e.size() : 1, ' ') + f.name + "\n";
+  }
+  return r;
 }
 
 std::vector<std::size_t> parse_bucket_list(const std::string& s) {
@@ -491,7 +505,7 @@ void write_mesh_file(const std::string& out, const Mesh& mesh) {
 }
 
 void write_mesh_with_point_data(const std::string& out, Mesh& mesh,
-                                const std::vector<CGAL::PR_star_octree::Point_data_array>& arrays) {
+                                const std::vector<CGAL::PR_star_octree::Data_array>& arrays) {
   const std::size_t own = mesh.point_data.size();
   mesh.point_data.insert(mesh.point_data.end(), arrays.begin(), arrays.end());
   try {

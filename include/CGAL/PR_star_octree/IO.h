@@ -12,13 +12,8 @@
 
 #include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
-#include <CGAL/PR_star_octree/IO/gmsh.h>
-#include <CGAL/PR_star_octree/IO/medit.h>
-#include <CGAL/PR_star_octree/IO/meshb.h>
-#include <CGAL/PR_star_octree/IO/tet_off.h>
-#include <CGAL/PR_star_octree/IO/tetgen.h>
-#include <CGAL/PR_star_octree/IO/vtk.h>
-#include <CGAL/PR_star_octree/IO/vtu.h>
+#include <CGAL/PR_star_octree/IO/Write_options.h>
+#include <CGAL/PR_star_octree/IO/formats.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
 #include <string>
@@ -26,108 +21,101 @@
 namespace CGAL {
 namespace PR_star_octree {
 namespace IO {
-namespace internal {
-
-/// The extension of a file name, lower case, without the dot (empty when there is none).
-inline std::string lower_extension(const std::string& filename) {
-  const std::size_t dot = filename.find_last_of('.');
-  const std::size_t slash = filename.find_last_of("/\\");
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return std::string();
-  return to_lower(filename.substr(dot + 1));
-}
-
-} // namespace internal
 
 /// \ingroup PkgPRStarOctreeIO
-/// The extensions `read_tetrahedral_mesh()` accepts, for messages.
-inline const char* readable_extensions() {
-  return ".mesh, .node/.ele, .vtk, .vtu, .off/.ts, .msh, .meshb";
+/// The extensions `read_tetrahedral_mesh()` accepts, for messages (from the format table
+/// `mesh_formats`).
+inline std::string readable_extensions() {
+  return mesh_format_extensions();
 }
 
 /// \ingroup PkgPRStarOctreeIO
-/// The extensions `write_tetrahedral_mesh()` accepts, for messages.
-inline const char* writable_extensions() {
-  return ".mesh, .vtu, .vtk, .off/.ts, .msh, .meshb, .node/.ele";
+/// The extensions `write_tetrahedral_mesh()` accepts, for messages (from the format table
+/// `mesh_formats`).
+inline std::string writable_extensions() {
+  return mesh_format_extensions();
 }
 
 /// \ingroup PkgPRStarOctreeIO
 /// Whether `read_tetrahedral_mesh()` knows the extension of `filename` (a file name or an
 /// extension with its dot such as `".vtu"`; case-insensitive).
 inline bool is_readable_extension(const std::string& filename) {
-  const std::string e = internal::lower_extension(filename);
-  return e == "mesh" || e == "node" || e == "ele" || e == "vtk" || e == "vtu" || e == "off" || e == "ts" ||
-         e == "msh" || e == "meshb";
+  return find_mesh_format(filename) != nullptr;
 }
 
 /// \ingroup PkgPRStarOctreeIO
 /// Whether `write_tetrahedral_mesh()` knows the extension of `filename` (a file name or an
 /// extension with its dot; case-insensitive).
 inline bool is_writable_extension(const std::string& filename) {
-  const std::string e = internal::lower_extension(filename);
-  return e == "mesh" || e == "vtu" || e == "vtk" || e == "off" || e == "ts" || e == "msh" || e == "meshb" ||
-         e == "node" || e == "ele";
+  return find_mesh_format(filename) != nullptr;
 }
 
+namespace internal {
+
+inline std::string unknown_extension_message(const std::string& filename) {
+  const std::string e = lower_extension(filename);
+  return (e.empty() ? std::string("no file extension") : "unknown file extension '." + e + "'") +
+         ": supported are " + mesh_format_extensions();
+}
+
+} // namespace internal
+
 /// \ingroup PkgPRStarOctreeIO
-/// Reads a tetrahedral mesh with the reader chosen by the extension of `filename`
-/// (case-insensitive): `.mesh` (`read_medit()`), `.node` or `.ele` (`read_tetgen()`, both files
-/// being read), `.vtk` (`read_vtk()`), `.vtu` (`read_vtu()`), `.off` or `.ts` (`read_tet_off()`),
-/// `.msh` (`read_gmsh()`), `.meshb` (`read_meshb()`).
+/// Reads a tetrahedral mesh with the reader of the format table `mesh_formats` chosen by the
+/// extension of `filename` (case-insensitive): `.mesh` (`read_medit()`), `.meshb`
+/// (`read_meshb()`), `.node` or `.ele` (`read_tetgen()`, both files being read), `.vtk`
+/// (`read_vtk()`), `.vtu` (`read_vtu()`), `.msh` (`read_gmsh()`), `.off` or `.ts`
+/// (`read_tet_off()`).
 /// \throws Read_error for an unknown extension (the message lists the supported ones) and for any
 /// problem of the file; `mesh` is then left unchanged.
 template <class Mesh>
 void read_tetrahedral_mesh(const std::string& filename, Mesh& mesh) {
-  const std::string e = internal::lower_extension(filename);
-  if (e == "mesh")
-    read_medit(filename, mesh);
-  else if (e == "node" || e == "ele")
-    read_tetgen(filename, mesh);
-  else if (e == "vtk")
-    read_vtk(filename, mesh);
-  else if (e == "vtu")
-    read_vtu(filename, mesh);
-  else if (e == "off" || e == "ts")
-    read_tet_off(filename, mesh);
-  else if (e == "msh")
-    read_gmsh(filename, mesh);
-  else if (e == "meshb")
-    read_meshb(filename, mesh);
-  else
-    throw Read_error(filename, 0,
-                     (e.empty() ? std::string("no file extension") : "unknown file extension '." + e + "'") +
-                         ": supported are " + readable_extensions());
+  const Mesh_format<Mesh>* f = find_mesh_format<Mesh>(filename);
+  if (f == nullptr) throw Read_error(filename, 0, internal::unknown_extension_message(filename));
+  f->read_file(filename, mesh);
 }
 
 /// \ingroup PkgPRStarOctreeIO
-/// Writes `mesh` with the writer chosen by the extension of `filename` (case-insensitive):
-/// `.mesh` (`write_medit()`), `.vtu` (`write_vtu()`: appended and zlib-compressed, ascii with
-/// `CGAL::parameters::use_binary_mode(false)`), `.vtk` (`write_vtk()`: legacy 4.2, ASCII, binary with
-/// `CGAL::parameters::use_binary_mode(true)`), `.off` or `.ts` (`write_tet_off()`),
-/// `.msh` (`write_gmsh()`: 4.1 ASCII), `.meshb` (`write_meshb()`), `.node` or `.ele` (`write_tetgen()`).
-/// \throws Write_error for an unknown extension (the message lists the supported ones), when the
-/// file cannot be written or when the mesh is inconsistent.
-template <class Mesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+/// Writes `mesh` with the writer of the format table `mesh_formats` chosen by the extension of
+/// `filename` (case-insensitive): `.mesh` (`write_medit()`), `.meshb` (`write_meshb()`), `.node`
+/// or `.ele` (`write_tetgen()`), `.vtk` (`write_vtk()`), `.vtu` (`write_vtu()`), `.msh`
+/// (`write_gmsh()`), `.off` or `.ts` (`write_tet_off()`).  The write options have the same names
+/// and meanings for every format; each format accepts those of its record (`write_options_text()`)
+/// and refuses the others.
+/// \param filename the name of the file; its extension chooses the format
+/// \param mesh the mesh
+/// \param np an optional sequence of named parameters among the ones listed below
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{use_binary_mode}
+///     \cgalParamDescription{binary (`true`) or text (`false`) where the format has both (`.vtk`,
+///       `.vtu`, `.msh`); `.mesh`, `.node`/`.ele` and `.off`/`.ts` are text only, `.meshb` binary only}
+///     \cgalParamType{Boolean}
+///     \cgalParamDefault{`true` for `.vtu` (appended raw data, as ParaView writes) and `.meshb`, else
+///     `false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{compression}
+///     \cgalParamDescription{`Compression::zlib` or `Compression::none`: the compression of the binary
+///       data (`.vtu` only; `Compression::none` is accepted by every format)}
+///     \cgalParamType{`CGAL::PR_star_octree::IO::Compression`}
+///     \cgalParamDefault{`Compression::zlib` for binary `.vtu` when the build has zlib, else
+///     `Compression::none`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{format_version}
+///     \cgalParamDescription{the version of the format written: 4.1 or 2.2 for `.msh`, 1 to 4 for
+///       `.meshb`, 4.2 for `.vtk`, 1.0 for `.vtu`, 2 for `.mesh`; refused by the formats without
+///       versions (`.node`/`.ele`, `.off`/`.ts`)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{4.1 for `.msh`, the smallest that fits for `.meshb` (2 under 2 GB)}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \throws Write_error for an unknown extension (the message lists the supported ones), an option
+/// the format cannot honour, when the file cannot be written or when the mesh is inconsistent.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
 void write_tetrahedral_mesh(const std::string& filename, const Mesh& mesh,
-                            const NamedParameters& np = CGAL::parameters::default_values()) {
-  const std::string e = internal::lower_extension(filename);
-  if (e == "mesh")
-    write_medit(filename, mesh);
-  else if (e == "vtu")
-    write_vtu(filename, mesh, {}, np);
-  else if (e == "vtk")
-    write_vtk(filename, mesh, {}, np);
-  else if (e == "off" || e == "ts")
-    write_tet_off(filename, mesh);
-  else if (e == "msh")
-    write_gmsh(filename, mesh);
-  else if (e == "meshb")
-    write_meshb(filename, mesh);
-  else if (e == "node" || e == "ele")
-    write_tetgen(filename, mesh);
-  else
-    throw Write_error(filename,
-                      (e.empty() ? std::string("no file extension") : "unknown file extension '." + e + "'") +
-                          ": writable are " + writable_extensions());
+                            const NamedParameters& np = parameters::default_values()) {
+  const Mesh_format<Mesh>* f = find_mesh_format<Mesh>(filename);
+  if (f == nullptr) throw Write_error(filename, internal::unknown_extension_message(filename));
+  f->write_file(filename, mesh, internal::write_options(np));
 }
 
 } // namespace IO

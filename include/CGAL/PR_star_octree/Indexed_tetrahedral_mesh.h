@@ -18,11 +18,16 @@ namespace CGAL {
 namespace PR_star_octree {
 
 /// \ingroup PkgPRStarOctreeRef
-/// A named scalar array with one value per vertex (VTK "point data").
-struct Point_data_array {
-  std::string name;
-  std::vector<double> values;
+/// A named scalar array: one value per vertex (VTK "point data", `Indexed_tetrahedral_mesh::point_data`)
+/// or one value per tetrahedron (VTK "cell data", `Indexed_tetrahedral_mesh::cell_data`).
+struct Data_array {
+  std::string name;           ///< the name of the array (VTK's `Name`)
+  std::vector<double> values; ///< one value per vertex or per tetrahedron
 };
+
+/// \ingroup PkgPRStarOctreeRef
+/// \deprecated The former name of `Data_array`, which holds cell data as well as point data.
+using Point_data_array = Data_array;
 
 /// \ingroup PkgPRStarOctreeRef
 /// The plain indexed representation of a tetrahedral mesh (paper Section 2.3): an array of
@@ -47,10 +52,10 @@ struct Indexed_tetrahedral_mesh {
   /// empty, or one label per tetrahedron
   std::vector<int> tetrahedron_labels;
   /// each array has `points.size()` values
-  std::vector<Point_data_array> point_data;
+  std::vector<Data_array> point_data;
   /// per-tetrahedron scalar arrays other than the labels (VTK cell data); each has
   /// `tetrahedra.size()` values
-  std::vector<Point_data_array> cell_data;
+  std::vector<Data_array> cell_data;
   /// the names of the labels, when the file has them (gmsh `$PhysicalNames`): label -> name
   std::map<int, std::string> label_names;
   /// the cells of other types a reader met and did not keep, by type name (e.g. `"triangle"`),
@@ -61,11 +66,11 @@ struct Indexed_tetrahedral_mesh {
   std::size_t number_of_tetrahedra() const { return tetrahedra.size(); }
 
   /// the first point-data array, or `nullptr` when there is none
-  const Point_data_array* scalar_field() const { return point_data.empty() ? nullptr : &point_data.front(); }
+  const Data_array* scalar_field() const { return point_data.empty() ? nullptr : &point_data.front(); }
 
   /// the point-data array named `name`, or `nullptr`
-  const Point_data_array* find_point_data(const std::string& name) const {
-    for (const Point_data_array& a : point_data)
+  const Data_array* find_point_data(const std::string& name) const {
+    for (const Data_array& a : point_data)
       if (a.name == name) return &a;
     return nullptr;
   }

@@ -38,7 +38,9 @@ namespace PR_star_octree {
   X(vertex_type_map)                                                                                         \
   X(vertex_permutation)                                                                                      \
   X(tetrahedron_permutation)                                                                                 \
-  X(concurrency_tag)
+  X(concurrency_tag)                                                                                         \
+  X(compression)                                                                                             \
+  X(format_version)
 
 namespace internal_np {
 // The tags of the package's own named parameters (CGAL's tags live in `CGAL::internal_np`).

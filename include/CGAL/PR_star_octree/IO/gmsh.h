@@ -10,6 +10,7 @@
 /// Reading and writing gmsh `.msh` files (versions 2.2 and 4.1, ASCII and binary).
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/Write_options.h>
 #include <CGAL/PR_star_octree/IO/internal/gmsh_reader.h>
 #include <CGAL/PR_star_octree/IO/internal/gmsh_writer.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
@@ -24,19 +25,34 @@ namespace CGAL {
 namespace PR_star_octree {
 namespace IO {
 
-/// \ingroup PkgPRStarOctreeIO
-/// The version of the `.msh` format written by `write_gmsh()`.
-enum class Gmsh_version {
-  msh22, ///< the legacy format 2.2 (physical and elementary tags on each element)
-  msh41  ///< the current format 4.1 (entities, node and element blocks); gmsh's default
-};
+namespace internal {
 
-/// \ingroup PkgPRStarOctreeIO
-/// How `write_gmsh()` writes: version 4.1 in ASCII by default (as gmsh does).
-struct Gmsh_write_options {
-  Gmsh_version version = Gmsh_version::msh41; ///< the format version
-  bool binary = false;                        ///< binary (machine byte order) instead of ASCII
-};
+/// What the gmsh writer accepts: ASCII (default) or binary, versions 4.1 (default) and 2.2.
+inline constexpr Write_support gmsh_write_support{
+    true, true, false, false, false, {"4.1", "2.2", nullptr, nullptr}, nullptr};
+
+template <class Mesh>
+void write_gmsh_stream(std::ostream& out, const Mesh& mesh, const Write_options& given,
+                       const std::string& name) {
+  const Write_options o = resolve_write_options(given, gmsh_write_support, "gmsh .msh", name);
+  check_mesh_for_writing(mesh, name);
+  if (version_tenths(o.version) == 41)
+    write_gmsh_41(out, mesh, o.binary, name);
+  else
+    write_gmsh_22(out, mesh, o.binary, name);
+}
+
+template <class Mesh>
+void write_gmsh_file(const std::string& filename, const Mesh& mesh, const Write_options& given) {
+  resolve_write_options(given, gmsh_write_support, "gmsh .msh", filename);
+  check_mesh_for_writing(mesh, filename);
+  std::ofstream out;
+  open_for_writing(out, filename);
+  write_gmsh_stream(out, mesh, given, filename);
+  close_written(out, filename);
+}
+
+} // namespace internal
 
 /// \ingroup PkgPRStarOctreeIO
 /// Reads a tetrahedral mesh from a gmsh `.msh` file held by a stream; `name` is used in error
@@ -82,19 +98,15 @@ void read_gmsh(const std::string& filename, Mesh& mesh) {
 
 /// \ingroup PkgPRStarOctreeIO
 /// Writes `mesh` to a stream in the gmsh `.msh` format; `name` is used in error messages.  See
-/// `write_gmsh(const std::string&, const Mesh&, const Gmsh_write_options&)`.
-template <class Mesh>
-void write_gmsh(std::ostream& out, const Mesh& mesh, const Gmsh_write_options& options = Gmsh_write_options(),
+/// `write_gmsh(const std::string&, const Mesh&, const NamedParameters&)`, whose options it takes.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
+void write_gmsh(std::ostream& out, const Mesh& mesh, const NamedParameters& np = parameters::default_values(),
                 const std::string& name = "<stream>") {
-  internal::check_mesh_for_writing(mesh, name);
-  if (options.version == Gmsh_version::msh41)
-    internal::write_gmsh_41(out, mesh, options.binary, name);
-  else
-    internal::write_gmsh_22(out, mesh, options.binary, name);
+  internal::write_gmsh_stream(out, mesh, internal::write_options(np), name);
 }
 
 /// \ingroup PkgPRStarOctreeIO
-/// Writes `mesh` to the gmsh file `filename`, in version 4.1 ASCII unless `options` asks for 2.2
+/// Writes `mesh` to the gmsh file `filename`, in version 4.1 ASCII unless `np` asks for 2.2
 /// and/or binary.
 ///
 /// Nodes are tagged 1..n in the order of `mesh.points` and tetrahedra 1..m in the order of
@@ -105,15 +117,28 @@ void write_gmsh(std::ostream& out, const Mesh& mesh, const Gmsh_write_options& o
 /// `mesh.label_names`.  Without labels, all tetrahedra are in one volume without physical tag.
 /// Point data and cell data are not written.  Binary 2.2 files need fewer than 2^31 vertices and
 /// tetrahedra.  gmsh expects positive physical tags.
-/// \throws Write_error when the file cannot be written or the mesh is inconsistent.
-template <class Mesh>
+/// \param filename the name of the file
+/// \param mesh the mesh
+/// \param np the write options (`Write_options.h`)
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{use_binary_mode}
+///     \cgalParamDescription{binary (`true`, machine byte order, as gmsh writes it) or ASCII (`false`)}
+///     \cgalParamType{Boolean}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{format_version}
+///     \cgalParamDescription{4.1 (entities, node and element blocks) or 2.2 (physical and elementary
+///       tags on each element)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{4.1}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \throws Write_error when the file cannot be written, the mesh is inconsistent or an option is
+/// not possible.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
 void write_gmsh(const std::string& filename, const Mesh& mesh,
-                const Gmsh_write_options& options = Gmsh_write_options()) {
-  internal::check_mesh_for_writing(mesh, filename);
-  std::ofstream out;
-  internal::open_for_writing(out, filename);
-  write_gmsh(out, mesh, options, filename);
-  internal::close_written(out, filename);
+                const NamedParameters& np = parameters::default_values()) {
+  internal::write_gmsh_file(filename, mesh, internal::write_options(np));
 }
 
 } // namespace IO

@@ -8,7 +8,8 @@
 
 #include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
-#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
+#include <CGAL/PR_star_octree/IO/Write_options.h>
+#include <CGAL/PR_star_octree/IO/internal/file_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
@@ -213,55 +214,96 @@ void read_medit(const std::string& filename, Mesh& mesh) {
   internal::read_medit_text(text.view(), filename, mesh);
 }
 
+namespace internal {
+
+/// What the Medit ASCII writer accepts: text, version 2 (double precision).
+inline constexpr Write_support medit_write_support{
+    true, false, false, false, false, {"2", nullptr, nullptr, nullptr}, nullptr};
+
+template <class Mesh>
+void write_medit_stream(std::ostream& out, const Mesh& mesh, const Write_options& given,
+                        const std::string& name) {
+  resolve_write_options(given, medit_write_support, "Medit .mesh", name);
+  check_mesh_for_writing(mesh, name);
+  std::string buf;
+  buf += "MeshVersionFormatted 2\nDimension 3\n\nVertices\n";
+  append_integer(buf, mesh.points.size());
+  buf += '\n';
+  for (const auto& p : mesh.points) {
+    append_double(buf, CGAL::to_double(p.x()));
+    buf += ' ';
+    append_double(buf, CGAL::to_double(p.y()));
+    buf += ' ';
+    append_double(buf, CGAL::to_double(p.z()));
+    buf += " 0\n";
+    flush_buffer(out, buf, name);
+  }
+  buf += "\nTetrahedra\n";
+  append_integer(buf, mesh.tetrahedra.size());
+  buf += '\n';
+  const bool labels = !mesh.tetrahedron_labels.empty();
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
+    for (const auto v : mesh.tetrahedra[t]) {
+      append_integer(buf, static_cast<unsigned long long>(v) + 1);
+      buf += ' ';
+    }
+    append_integer(buf, labels ? mesh.tetrahedron_labels[t] : 1);
+    buf += '\n';
+    flush_buffer(out, buf, name);
+  }
+  buf += "\nEnd\n";
+  flush_buffer(out, buf, name, true);
+}
+
+template <class Mesh>
+void write_medit_file(const std::string& filename, const Mesh& mesh, const Write_options& given) {
+  resolve_write_options(given, medit_write_support, "Medit .mesh", filename);
+  check_mesh_for_writing(mesh, filename);
+  std::ofstream out;
+  open_for_writing(out, filename);
+  write_medit_stream(out, mesh, given, filename);
+  close_written(out, filename);
+}
+
+} // namespace internal
+
 /// \ingroup PkgPRStarOctreeIO
 /// Writes `mesh` to a stream in the Medit ASCII format (`MeshVersionFormatted 2`, `Dimension 3`,
 /// `Vertices` with reference 0, `Tetrahedra` 1-based with the labels of the mesh as references,
 /// or 1 when it has none, `End`).  Coordinates are written with the shortest decimal form that
 /// reads back exactly.  Point data cannot be stored in a `.mesh` file and are not written.
-/// \throws Write_error when the stream fails or the mesh is inconsistent.
-template <class Mesh>
-void write_medit(std::ostream& out, const Mesh& mesh, const std::string& name = "<stream>") {
-  internal::check_mesh_for_writing(mesh, name);
-  std::string buf;
-  buf += "MeshVersionFormatted 2\nDimension 3\n\nVertices\n";
-  internal::append_integer(buf, mesh.points.size());
-  buf += '\n';
-  for (const auto& p : mesh.points) {
-    internal::append_double(buf, CGAL::to_double(p.x()));
-    buf += ' ';
-    internal::append_double(buf, CGAL::to_double(p.y()));
-    buf += ' ';
-    internal::append_double(buf, CGAL::to_double(p.z()));
-    buf += " 0\n";
-    internal::flush_buffer(out, buf, name);
-  }
-  buf += "\nTetrahedra\n";
-  internal::append_integer(buf, mesh.tetrahedra.size());
-  buf += '\n';
-  const bool labels = !mesh.tetrahedron_labels.empty();
-  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
-    for (const auto v : mesh.tetrahedra[t]) {
-      internal::append_integer(buf, static_cast<unsigned long long>(v) + 1);
-      buf += ' ';
-    }
-    internal::append_integer(buf, labels ? mesh.tetrahedron_labels[t] : 1);
-    buf += '\n';
-    internal::flush_buffer(out, buf, name);
-  }
-  buf += "\nEnd\n";
-  internal::flush_buffer(out, buf, name, true);
+/// \param out the stream
+/// \param mesh the mesh
+/// \param np the write options (`Write_options.h`); only text, uncompressed, version 2 is possible
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{use_binary_mode}
+///     \cgalParamDescription{must be `false` (the binary form is `.meshb`, `write_meshb()`)}
+///     \cgalParamType{Boolean}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{format_version}
+///     \cgalParamDescription{`MeshVersionFormatted`: 2 only (double precision)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{2}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \param name the name of the stream in error messages
+/// \throws Write_error when the stream fails, the mesh is inconsistent or an option is not possible.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
+void write_medit(std::ostream& out, const Mesh& mesh,
+                 const NamedParameters& np = parameters::default_values(),
+                 const std::string& name = "<stream>") {
+  internal::write_medit_stream(out, mesh, internal::write_options(np), name);
 }
 
 /// \ingroup PkgPRStarOctreeIO
 /// Writes `mesh` to the Medit ASCII file `filename`; see `write_medit(std::ostream&, const Mesh&, const
-/// std::string&)`. \throws Write_error when the file cannot be written or the mesh is inconsistent.
-template <class Mesh>
-void write_medit(const std::string& filename, const Mesh& mesh) {
-  internal::check_mesh_for_writing(mesh, filename);
-  std::ofstream out;
-  internal::open_for_writing(out, filename);
-  write_medit(out, mesh, filename);
-  internal::close_written(out, filename);
+/// NamedParameters&, const std::string&)`, whose options it takes.
+/// \throws Write_error when the file cannot be written, or for the reasons given there.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
+void write_medit(const std::string& filename, const Mesh& mesh,
+                 const NamedParameters& np = parameters::default_values()) {
+  internal::write_medit_file(filename, mesh, internal::write_options(np));
 }
 
 } // namespace IO

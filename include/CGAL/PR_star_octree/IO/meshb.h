@@ -11,7 +11,8 @@
 
 #include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
-#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
+#include <CGAL/PR_star_octree/IO/Write_options.h>
+#include <CGAL/PR_star_octree/IO/internal/file_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
@@ -43,15 +44,9 @@ void read_meshb_data(std::string_view data, const std::string& name, Mesh& resul
   using Index = typename Mesh::Index;
   Byte_cursor c(data, name);
   if (data.size() < 8) c.fail("not a Medit binary mesh: the file is shorter than its 8-byte header");
-  const std::int32_t code = load_value<std::int32_t>(data.data(), false);
-  if (code == 1)
-    c.set_swap(false);
-  else if (byte_swapped(code) == 1)
-    c.set_swap(true);
-  else
-    c.fail("not a Medit binary mesh: the first integer is " + std::to_string(code) +
-           ", not 1 (in either byte order)");
-  c.skip(4, "header");
+  if (!c.take_byte_order_mark())
+    c.fail("not a Medit binary mesh: the first integer is " +
+           std::to_string(load_value<std::int32_t>(data.data(), false)) + ", not 1 (in either byte order)");
   const std::int32_t version = c.get<std::int32_t>("version");
   if (version < 1 || version > 4)
     c.fail_at(4, "unsupported .meshb version " + std::to_string(version) + " (1 to 4)");
@@ -195,12 +190,23 @@ void read_meshb(const std::string& filename, Mesh& mesh) {
   internal::read_meshb_data(data.view(), filename, mesh);
 }
 
-/// \ingroup PkgPRStarOctreeIO
-/// Writes `mesh` to a stream in the Medit binary format; see
-/// `write_meshb(const std::string&, const Mesh&, int)`.
+namespace internal {
+
+/// What the Medit binary writer accepts: binary, versions 1 to 4 (by default the smallest that fits).
+inline constexpr Write_support meshb_write_support{false,
+                                                   true,
+                                                   true,
+                                                   false,
+                                                   false,
+                                                   {"1", "2", "3", "4"},
+                                                   "2 when the file stays under 2 GB, else 3, else 4"};
+
 template <class Mesh>
-void write_meshb(std::ostream& out, const Mesh& mesh, int version = 0, const std::string& name = "<stream>") {
-  internal::check_mesh_for_writing(mesh, name);
+void write_meshb_stream(std::ostream& out, const Mesh& mesh, const Write_options& given,
+                        const std::string& name) {
+  const Write_options o = resolve_write_options(given, meshb_write_support, "Medit .meshb", name);
+  int version = static_cast<int>(version_tenths(o.version) / 10);
+  check_mesh_for_writing(mesh, name);
   const std::uint64_t nv = mesh.points.size(), nt = mesh.tetrahedra.size();
   if (version == 0) {
     const std::uint64_t size = 100 + nv * 28 + nt * 20;
@@ -230,30 +236,30 @@ void write_meshb(std::ostream& out, const Mesh& mesh, int version = 0, const std
   std::string buf;
   const auto put_int = [&](std::int64_t v) {
     if (int_bytes == 4)
-      internal::append_binary<std::int32_t>(buf, static_cast<std::int32_t>(v));
+      append_binary<std::int32_t>(buf, static_cast<std::int32_t>(v));
     else
-      internal::append_binary<std::int64_t>(buf, v);
+      append_binary<std::int64_t>(buf, v);
   };
   const auto put_pos = [&](std::uint64_t v) {
     if (pos_bytes == 4)
-      internal::append_binary<std::int32_t>(buf, static_cast<std::int32_t>(v));
+      append_binary<std::int32_t>(buf, static_cast<std::int32_t>(v));
     else
-      internal::append_binary<std::int64_t>(buf, static_cast<std::int64_t>(v));
+      append_binary<std::int64_t>(buf, static_cast<std::int64_t>(v));
   };
   const auto put_real = [&](double v) {
     if (real_bytes == 4)
-      internal::append_binary<float>(buf, static_cast<float>(v));
+      append_binary<float>(buf, static_cast<float>(v));
     else
-      internal::append_binary<double>(buf, v);
+      append_binary<double>(buf, v);
   };
-  internal::append_binary<std::int32_t>(buf, 1);
-  internal::append_binary<std::int32_t>(buf, version);
+  append_binary<std::int32_t>(buf, 1);
+  append_binary<std::int32_t>(buf, version);
   std::uint64_t pos = 8 + 4 + pos_bytes + 4;
-  internal::append_binary<std::int32_t>(buf, internal::meshb_dimension);
+  append_binary<std::int32_t>(buf, meshb_dimension);
   put_pos(pos);
-  internal::append_binary<std::int32_t>(buf, 3);
+  append_binary<std::int32_t>(buf, 3);
   pos += 4 + pos_bytes + int_bytes + nv * (3 * real_bytes + int_bytes);
-  internal::append_binary<std::int32_t>(buf, internal::meshb_vertices);
+  append_binary<std::int32_t>(buf, meshb_vertices);
   put_pos(pos);
   put_int(static_cast<std::int64_t>(nv));
   for (const auto& p : mesh.points) {
@@ -261,38 +267,72 @@ void write_meshb(std::ostream& out, const Mesh& mesh, int version = 0, const std
     put_real(CGAL::to_double(p.y()));
     put_real(CGAL::to_double(p.z()));
     put_int(0);
-    internal::flush_buffer(out, buf, name);
+    flush_buffer(out, buf, name);
   }
   pos += 4 + pos_bytes + int_bytes + nt * 5 * int_bytes;
-  internal::append_binary<std::int32_t>(buf, internal::meshb_tetrahedra);
+  append_binary<std::int32_t>(buf, meshb_tetrahedra);
   put_pos(pos);
   put_int(static_cast<std::int64_t>(nt));
   const bool labels = !mesh.tetrahedron_labels.empty();
   for (std::size_t t = 0; t < nt; ++t) {
     for (const auto v : mesh.tetrahedra[t]) put_int(static_cast<std::int64_t>(v) + 1);
     put_int(labels ? mesh.tetrahedron_labels[t] : 1);
-    internal::flush_buffer(out, buf, name);
+    flush_buffer(out, buf, name);
   }
-  internal::append_binary<std::int32_t>(buf, internal::meshb_end);
+  append_binary<std::int32_t>(buf, meshb_end);
   put_pos(0);
-  internal::flush_buffer(out, buf, name, true);
+  flush_buffer(out, buf, name, true);
+}
+
+template <class Mesh>
+void write_meshb_file(const std::string& filename, const Mesh& mesh, const Write_options& given) {
+  resolve_write_options(given, meshb_write_support, "Medit .meshb", filename);
+  check_mesh_for_writing(mesh, filename);
+  std::ofstream out;
+  open_for_writing(out, filename);
+  write_meshb_stream(out, mesh, given, filename);
+  close_written(out, filename);
+}
+
+} // namespace internal
+
+/// \ingroup PkgPRStarOctreeIO
+/// Writes `mesh` to a stream in the Medit binary format; see
+/// `write_meshb(const std::string&, const Mesh&, const NamedParameters&)`, whose options it takes.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
+void write_meshb(std::ostream& out, const Mesh& mesh,
+                 const NamedParameters& np = parameters::default_values(),
+                 const std::string& name = "<stream>") {
+  internal::write_meshb_stream(out, mesh, internal::write_options(np), name);
 }
 
 /// \ingroup PkgPRStarOctreeIO
 /// Writes `mesh` to the Medit binary file `filename`: `Dimension 3`, `Vertices` (reference 0),
 /// `Tetrahedra` (1-based, the labels as references, or 1 when the mesh has none), `End`, in the
-/// machine's byte order.  `version` 1 to 4 (see `read_meshb()`); 0 chooses 2 (64-bit reals, 32-bit
-/// integers) when the file stays under 2 GB, else 3, else 4.  Version 1 stores the coordinates as
-/// 32-bit floats (rounded).  Point data cannot be stored and are not written.
+/// machine's byte order.  Version 1 stores the coordinates as 32-bit floats (rounded).  Point data
+/// cannot be stored and are not written.
+/// \param filename the name of the file
+/// \param mesh the mesh
+/// \param np the write options (`Write_options.h`)
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{use_binary_mode}
+///     \cgalParamDescription{must be `true` (the text form is `.mesh`, `write_medit()`)}
+///     \cgalParamType{Boolean}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{format_version}
+///     \cgalParamDescription{1 (32-bit reals and integers), 2 (64-bit reals), 3 (64-bit reals and
+///       positions) or 4 (64-bit reals, integers and positions); see `read_meshb()`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{2 when the file stays under 2 GB, else 3 when the counts fit in 32 bits, else 4}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \throws Write_error when the file cannot be written, the mesh is inconsistent or too large for
-/// the requested version.
-template <class Mesh>
-void write_meshb(const std::string& filename, const Mesh& mesh, int version = 0) {
-  internal::check_mesh_for_writing(mesh, filename);
-  std::ofstream out;
-  internal::open_for_writing(out, filename);
-  write_meshb(out, mesh, version, filename);
-  internal::close_written(out, filename);
+/// the requested version, or an option is not possible.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
+void write_meshb(const std::string& filename, const Mesh& mesh,
+                 const NamedParameters& np = parameters::default_values()) {
+  internal::write_meshb_file(filename, mesh, internal::write_options(np));
 }
 
 } // namespace IO

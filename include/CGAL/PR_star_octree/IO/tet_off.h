@@ -8,7 +8,8 @@
 
 #include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
-#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
+#include <CGAL/PR_star_octree/IO/Write_options.h>
+#include <CGAL/PR_star_octree/IO/internal/file_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
@@ -109,7 +110,7 @@ void read_tet_off_text(std::string_view text, const std::string& name, Mesh& res
     if (fields == 4) scalar.push_back(c[3]);
   }
   r.clear_context();
-  if (fields == 4) mesh.point_data.push_back(Point_data_array{"scalar", std::move(scalar)});
+  if (fields == 4) mesh.point_data.push_back(Data_array{"scalar", std::move(scalar)});
 
   // ---- tetrahedra
   capped_reserve(mesh.tetrahedra, nt, r.remaining_bytes(), 8);
@@ -195,55 +196,91 @@ void read_tet_off(const std::string& filename, Mesh& mesh) {
   internal::read_tet_off_text(text.view(), filename, mesh);
 }
 
+namespace internal {
+
+/// What the tet-OFF writer accepts: text, no version.
+inline constexpr Write_support tet_off_write_support{
+    true, false, false, false, false, {nullptr, nullptr, nullptr, nullptr}, nullptr};
+
+template <class Mesh>
+void write_tet_off_stream(std::ostream& out, const Mesh& mesh, const Write_options& given,
+                          const std::string& name) {
+  resolve_write_options(given, tet_off_write_support, "tet-OFF", name);
+  check_mesh_for_writing(mesh, name);
+  const auto* scalar = mesh.point_data.empty() ? nullptr : &mesh.point_data.front().values;
+  std::string buf;
+  append_integer(buf, mesh.points.size());
+  buf += ' ';
+  append_integer(buf, mesh.tetrahedra.size());
+  buf += '\n';
+  for (std::size_t i = 0; i < mesh.points.size(); ++i) {
+    const auto& p = mesh.points[i];
+    append_double(buf, CGAL::to_double(p.x()));
+    buf += ' ';
+    append_double(buf, CGAL::to_double(p.y()));
+    buf += ' ';
+    append_double(buf, CGAL::to_double(p.z()));
+    if (scalar) {
+      buf += ' ';
+      append_double(buf, (*scalar)[i]);
+    }
+    buf += '\n';
+    flush_buffer(out, buf, name);
+  }
+  for (const auto& t : mesh.tetrahedra) {
+    for (int k = 0; k < 4; ++k) {
+      append_integer(buf, static_cast<unsigned long long>(t[k]));
+      buf += (k == 3 ? '\n' : ' ');
+    }
+    flush_buffer(out, buf, name);
+  }
+  flush_buffer(out, buf, name, true);
+}
+
+template <class Mesh>
+void write_tet_off_file(const std::string& filename, const Mesh& mesh, const Write_options& given) {
+  resolve_write_options(given, tet_off_write_support, "tet-OFF", filename);
+  check_mesh_for_writing(mesh, filename);
+  std::ofstream out;
+  open_for_writing(out, filename);
+  write_tet_off_stream(out, mesh, given, filename);
+  close_written(out, filename);
+}
+
+} // namespace internal
+
 /// \ingroup PkgPRStarOctreeIO
 /// Writes `mesh` as tet-OFF to a stream: a line `nV nT`, the vertex lines `x y z [scalar]` (the
 /// scalar being the first point-data array of the mesh, when it has one), the tetrahedron lines
 /// `a b c d` (0-based).  Numbers are written with the shortest form that reads back exactly.  The
 /// labels and the other point-data arrays are not written.
-/// \throws Write_error when the stream fails or the mesh is inconsistent.
-template <class Mesh>
-void write_tet_off(std::ostream& out, const Mesh& mesh, const std::string& name = "<stream>") {
-  internal::check_mesh_for_writing(mesh, name);
-  const auto* scalar = mesh.point_data.empty() ? nullptr : &mesh.point_data.front().values;
-  std::string buf;
-  internal::append_integer(buf, mesh.points.size());
-  buf += ' ';
-  internal::append_integer(buf, mesh.tetrahedra.size());
-  buf += '\n';
-  for (std::size_t i = 0; i < mesh.points.size(); ++i) {
-    const auto& p = mesh.points[i];
-    internal::append_double(buf, CGAL::to_double(p.x()));
-    buf += ' ';
-    internal::append_double(buf, CGAL::to_double(p.y()));
-    buf += ' ';
-    internal::append_double(buf, CGAL::to_double(p.z()));
-    if (scalar) {
-      buf += ' ';
-      internal::append_double(buf, (*scalar)[i]);
-    }
-    buf += '\n';
-    internal::flush_buffer(out, buf, name);
-  }
-  for (const auto& t : mesh.tetrahedra) {
-    for (int k = 0; k < 4; ++k) {
-      internal::append_integer(buf, static_cast<unsigned long long>(t[k]));
-      buf += (k == 3 ? '\n' : ' ');
-    }
-    internal::flush_buffer(out, buf, name);
-  }
-  internal::flush_buffer(out, buf, name, true);
+/// \param out the stream
+/// \param mesh the mesh
+/// \param np the write options (`Write_options.h`); tet-OFF is text only and has no version
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{use_binary_mode}
+///     \cgalParamDescription{must be `false`}
+///     \cgalParamType{Boolean}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \param name the name of the stream in error messages
+/// \throws Write_error when the stream fails, the mesh is inconsistent or an option is not possible.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
+void write_tet_off(std::ostream& out, const Mesh& mesh,
+                   const NamedParameters& np = parameters::default_values(),
+                   const std::string& name = "<stream>") {
+  internal::write_tet_off_stream(out, mesh, internal::write_options(np), name);
 }
 
 /// \ingroup PkgPRStarOctreeIO
 /// Writes `mesh` to the tet-OFF file `filename`; see `write_tet_off(std::ostream&, const Mesh&, const
-/// std::string&)`. \throws Write_error when the file cannot be written or the mesh is inconsistent.
-template <class Mesh>
-void write_tet_off(const std::string& filename, const Mesh& mesh) {
-  internal::check_mesh_for_writing(mesh, filename);
-  std::ofstream out;
-  internal::open_for_writing(out, filename);
-  write_tet_off(out, mesh, filename);
-  internal::close_written(out, filename);
+/// NamedParameters&, const std::string&)`, whose options it takes.
+/// \throws Write_error when the file cannot be written, or for the reasons given there.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
+void write_tet_off(const std::string& filename, const Mesh& mesh,
+                   const NamedParameters& np = parameters::default_values()) {
+  internal::write_tet_off_file(filename, mesh, internal::write_options(np));
 }
 
 } // namespace IO

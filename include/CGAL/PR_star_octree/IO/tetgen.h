@@ -8,7 +8,8 @@
 
 #include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
-#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
+#include <CGAL/PR_star_octree/IO/Write_options.h>
+#include <CGAL/PR_star_octree/IO/internal/file_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
@@ -301,52 +302,99 @@ void read_tetgen(const std::string& node_or_ele_filename, Mesh& mesh) {
   internal::read_tetgen_text(node_text->view(), names.first, ele_text->view(), names.second, mesh);
 }
 
-/// \ingroup PkgPRStarOctreeIO
-/// Writes `mesh` as TetGen `.node` and `.ele` texts to two streams; see
-/// `write_tetgen(const std::string&, const Mesh&)`.
+namespace internal {
+
+/// What the TetGen writer accepts: text, no version.
+inline constexpr Write_support tetgen_write_support{
+    true, false, false, false, false, {nullptr, nullptr, nullptr, nullptr}, nullptr};
+
 template <class Mesh>
-void write_tetgen(std::ostream& node, std::ostream& ele, const Mesh& mesh,
-                  const std::string& node_name = "<node stream>",
-                  const std::string& ele_name = "<ele stream>") {
-  internal::check_mesh_for_writing(mesh, node_name);
+void write_tetgen_streams(std::ostream& node, std::ostream& ele, const Mesh& mesh, const Write_options& given,
+                          const std::string& node_name, const std::string& ele_name) {
+  resolve_write_options(given, tetgen_write_support, "TetGen", node_name);
+  check_mesh_for_writing(mesh, node_name);
   std::string buf;
   const std::size_t na = mesh.point_data.size();
-  internal::append_integer(buf, mesh.points.size());
+  append_integer(buf, mesh.points.size());
   buf += " 3 ";
-  internal::append_integer(buf, na);
+  append_integer(buf, na);
   buf += " 0\n";
   for (std::size_t i = 0; i < mesh.points.size(); ++i) {
     const auto& p = mesh.points[i];
-    internal::append_integer(buf, i + 1);
+    append_integer(buf, i + 1);
     for (const double c : {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}) {
       buf += ' ';
-      internal::append_double(buf, c);
+      append_double(buf, c);
     }
     for (const auto& a : mesh.point_data) {
       buf += ' ';
-      internal::append_double(buf, a.values[i]);
+      append_double(buf, a.values[i]);
     }
     buf += '\n';
-    internal::flush_buffer(node, buf, node_name);
+    flush_buffer(node, buf, node_name);
   }
-  internal::flush_buffer(node, buf, node_name, true);
+  flush_buffer(node, buf, node_name, true);
   const bool labels = !mesh.tetrahedron_labels.empty();
-  internal::append_integer(buf, mesh.tetrahedra.size());
+  append_integer(buf, mesh.tetrahedra.size());
   buf += labels ? " 4 1\n" : " 4 0\n";
   for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
-    internal::append_integer(buf, t + 1);
+    append_integer(buf, t + 1);
     for (const auto v : mesh.tetrahedra[t]) {
       buf += ' ';
-      internal::append_integer(buf, static_cast<unsigned long long>(v) + 1);
+      append_integer(buf, static_cast<unsigned long long>(v) + 1);
     }
     if (labels) {
       buf += ' ';
-      internal::append_integer(buf, mesh.tetrahedron_labels[t]);
+      append_integer(buf, mesh.tetrahedron_labels[t]);
     }
     buf += '\n';
-    internal::flush_buffer(ele, buf, ele_name);
+    flush_buffer(ele, buf, ele_name);
   }
-  internal::flush_buffer(ele, buf, ele_name, true);
+  flush_buffer(ele, buf, ele_name, true);
+}
+
+template <class Mesh>
+void write_tetgen_file(const std::string& node_or_ele_filename, const Mesh& mesh,
+                       const Write_options& given) {
+  std::pair<std::string, std::string> names;
+  try {
+    names = tetgen_file_names(node_or_ele_filename);
+  } catch (const Read_error&) {
+    throw Write_error(node_or_ele_filename, "a TetGen mesh is written to a '.node' or '.ele' file name");
+  }
+  resolve_write_options(given, tetgen_write_support, "TetGen", node_or_ele_filename);
+  check_mesh_for_writing(mesh, node_or_ele_filename);
+  std::ofstream node, ele;
+  open_for_writing(node, names.first);
+  open_for_writing(ele, names.second);
+  write_tetgen_streams(node, ele, mesh, given, names.first, names.second);
+  close_written(node, names.first);
+  close_written(ele, names.second);
+}
+
+/// The reader of the format table (one stream): the `.node` text, a NUL byte, the `.ele` text (an
+/// input without NUL is a `.node` text with an empty `.ele` text).
+template <class Mesh>
+void read_tetgen_joined(std::istream& in, Mesh& mesh, const std::string& name) {
+  const std::string all = load_stream(in, name);
+  const std::size_t nul = all.find('\0');
+  const std::string_view text(all);
+  read_tetgen_text(text.substr(0, nul), name + " (node)",
+                   nul == std::string::npos ? std::string_view() : text.substr(nul + 1), name + " (ele)",
+                   mesh);
+}
+
+} // namespace internal
+
+/// \ingroup PkgPRStarOctreeIO
+/// Writes `mesh` as TetGen `.node` and `.ele` texts to two streams; see
+/// `write_tetgen(const std::string&, const Mesh&, const NamedParameters&)`, whose options it takes.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
+void write_tetgen(std::ostream& node, std::ostream& ele, const Mesh& mesh,
+                  const NamedParameters& np = parameters::default_values(),
+                  const std::string& node_name = "<node stream>",
+                  const std::string& ele_name = "<ele stream>") {
+  internal::write_tetgen_streams(node, ele, mesh, internal::write_options(np), node_name, ele_name);
 }
 
 /// \ingroup PkgPRStarOctreeIO
@@ -357,23 +405,22 @@ void write_tetgen(std::ostream& node, std::ostream& ele, const Mesh& mesh,
 /// 4 nodes per tetrahedron and, when the mesh has labels, one attribute: the label (TetGen's region
 /// attribute, read back by `read_tetgen()` as the label).  Names of labels and cell data are not
 /// written.
+/// \param node_or_ele_filename the name of the `.node` or of the `.ele` file
+/// \param mesh the mesh
+/// \param np the write options (`Write_options.h`); TetGen files are text only and have no version
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{use_binary_mode}
+///     \cgalParamDescription{must be `false`}
+///     \cgalParamType{Boolean}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \throws Write_error when the name does not end with `.node` or `.ele`, a file cannot be
-/// written, or the mesh is inconsistent.
-template <class Mesh>
-void write_tetgen(const std::string& node_or_ele_filename, const Mesh& mesh) {
-  std::pair<std::string, std::string> names;
-  try {
-    names = internal::tetgen_file_names(node_or_ele_filename);
-  } catch (const Read_error&) {
-    throw Write_error(node_or_ele_filename, "a TetGen mesh is written to a '.node' or '.ele' file name");
-  }
-  internal::check_mesh_for_writing(mesh, node_or_ele_filename);
-  std::ofstream node, ele;
-  internal::open_for_writing(node, names.first);
-  internal::open_for_writing(ele, names.second);
-  write_tetgen(node, ele, mesh, names.first, names.second);
-  internal::close_written(node, names.first);
-  internal::close_written(ele, names.second);
+/// written, the mesh is inconsistent or an option is not possible.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
+void write_tetgen(const std::string& node_or_ele_filename, const Mesh& mesh,
+                  const NamedParameters& np = parameters::default_values()) {
+  internal::write_tetgen_file(node_or_ele_filename, mesh, internal::write_options(np));
 }
 
 } // namespace IO

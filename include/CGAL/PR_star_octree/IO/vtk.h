@@ -6,7 +6,11 @@
 #ifndef CGAL_PR_STAR_OCTREE_IO_VTK_H
 #define CGAL_PR_STAR_OCTREE_IO_VTK_H
 
+/// \file vtk.h
+/// Reading and writing legacy VTK `.vtk` files (ASCII and binary).
+
 #include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/Write_options.h>
 #include <CGAL/PR_star_octree/IO/internal/vtk_legacy.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 #include <CGAL/Named_function_parameters.h>
@@ -61,45 +65,78 @@ void read_vtk(const std::string& filename, Mesh& mesh) {
   internal::read_vtk_text(bytes.view(), filename, mesh);
 }
 
+namespace internal {
+
+/// What the legacy VTK writer accepts: ASCII (default) or binary, version 4.2.
+inline constexpr Write_support vtk_write_support{
+    true, true, false, false, false, {"4.2", nullptr, nullptr, nullptr}, nullptr};
+
+template <class Mesh>
+void write_vtk_options(std::ostream& out, const Mesh& mesh, const std::vector<Data_array>& extra_point_data,
+                       const Write_options& given, const std::string& name) {
+  const Write_options o = resolve_write_options(given, vtk_write_support, "legacy VTK", name);
+  write_vtk_stream(out, mesh, extra_point_data, o.binary, name);
+}
+
+template <class Mesh>
+void write_vtk_file(const std::string& filename, const Mesh& mesh,
+                    const std::vector<Data_array>& extra_point_data, const Write_options& given) {
+  resolve_write_options(given, vtk_write_support, "legacy VTK", filename);
+  check_named_arrays_for_writing(mesh, extra_point_data, filename);
+  std::ofstream out;
+  open_for_writing(out, filename);
+  write_vtk_options(out, mesh, extra_point_data, given, filename);
+  close_written(out, filename);
+}
+
+} // namespace internal
+
 /// \ingroup PkgPRStarOctreeIO
 /// Writes `mesh` to a stream as a legacy VTK file, version 4.2 (`DATASET UNSTRUCTURED_GRID`,
 /// `CELLS n 5n` of tetrahedra, `CELL_TYPES` 10), readable by VTK 5 to 9, ParaView and meshio:
 /// points in `double`, the point-data arrays of the mesh then `extra_point_data` as `POINT_DATA`
-/// `SCALARS` (`double`), the labels as the `CELL_DATA` `SCALARS label int`, the cell-data arrays as
-/// `SCALARS` (`double`); names with blanks are `%XX`-escaped.  ASCII (shortest exact decimal form)
-/// by default, binary (big-endian, 32-bit cell indices) with `CGAL::parameters::use_binary_mode(true)`.
+/// (the first one as `SCALARS`, the others in a `FIELD`, all `double`), the labels as the
+/// `CELL_DATA` `SCALARS label int`, the cell-data arrays as `double` arrays; names with blanks are
+/// `%XX`-escaped.  ASCII (shortest exact decimal form) by default, binary (big-endian, 32-bit
+/// cell indices) with `use_binary_mode(true)`.
 /// \tparam NamedParameters a sequence of named parameters
 /// \param out the stream
 /// \param mesh the mesh
 /// \param extra_point_data per-vertex arrays written after those of the mesh
-/// \param np `use_binary_mode` (default `false`)
+/// \param np the write options (`Write_options.h`)
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{use_binary_mode}
+///     \cgalParamDescription{binary (`true`, big-endian) or ASCII (`false`)}
+///     \cgalParamType{Boolean}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{format_version}
+///     \cgalParamDescription{4.2 only}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{4.2}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \param name the name of the stream in error messages
-/// \throws Write_error when the stream fails or the mesh or an array is inconsistent.
-template <class Mesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
-void write_vtk(std::ostream& out, const Mesh& mesh,
-               const std::vector<Point_data_array>& extra_point_data = {},
-               const NamedParameters& np = CGAL::parameters::default_values(),
+/// \throws Write_error when the stream fails, the mesh or an array is inconsistent (an array
+/// without one finite value per vertex, or per tetrahedron for cell data, two arrays with the same
+/// name), or an option is not possible.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
+void write_vtk(std::ostream& out, const Mesh& mesh, const std::vector<Data_array>& extra_point_data = {},
+               const NamedParameters& np = parameters::default_values(),
                const std::string& name = "<stream>") {
-  const bool binary = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::use_binary_mode), false);
-  internal::write_vtk_stream(out, mesh, extra_point_data, binary, name);
+  internal::write_vtk_options(out, mesh, extra_point_data, internal::write_options(np), name);
 }
 
 /// \ingroup PkgPRStarOctreeIO
 /// Writes `mesh` to the file `filename` as a legacy VTK file; see
-/// `write_vtk(std::ostream&, const Mesh&, const std::vector<Point_data_array>&, const NamedParameters&, const
-/// std::string&)`. \throws Write_error when the file cannot be written, or for the reasons given there.
-template <class Mesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+/// `write_vtk(std::ostream&, const Mesh&, const std::vector<Data_array>&, const NamedParameters&, const
+/// std::string&)`, whose options it takes.
+/// \throws Write_error when the file cannot be written, or for the reasons given there.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
 void write_vtk(const std::string& filename, const Mesh& mesh,
-               const std::vector<Point_data_array>& extra_point_data = {},
-               const NamedParameters& np = CGAL::parameters::default_values()) {
-  internal::check_mesh_for_writing(mesh, filename);
-  for (const auto& a : extra_point_data)
-    internal::check_point_data_for_writing(a, mesh.points.size(), filename);
-  std::ofstream out;
-  internal::open_for_writing(out, filename);
-  write_vtk(out, mesh, extra_point_data, np, filename);
-  internal::close_written(out, filename);
+               const std::vector<Data_array>& extra_point_data = {},
+               const NamedParameters& np = parameters::default_values()) {
+  internal::write_vtk_file(filename, mesh, extra_point_data, internal::write_options(np));
 }
 
 } // namespace IO

@@ -6,8 +6,12 @@
 #ifndef CGAL_PR_STAR_OCTREE_IO_VTU_H
 #define CGAL_PR_STAR_OCTREE_IO_VTU_H
 
+/// \file vtu.h
+/// Reading and writing VTK XML unstructured grids (`.vtu`).
+
 #include <CGAL/PR_star_octree/IO/Read_error.h>
-#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
+#include <CGAL/PR_star_octree/IO/Write_options.h>
+#include <CGAL/PR_star_octree/IO/internal/file_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/vtu_reader.h>
 #include <CGAL/PR_star_octree/IO/internal/vtu_writer.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
@@ -77,47 +81,19 @@ void read_vtu(const std::string& filename, Mesh& mesh) {
 
 namespace internal {
 
-/// Checks the cell-data arrays of a mesh before writing: one finite value per tetrahedron, a name.
-template <class Mesh>
-void check_cell_data_for_writing(const Mesh& mesh, const std::string& name) {
-  for (const Point_data_array& a : mesh.cell_data) {
-    if (a.name.empty()) throw Write_error(name, "a cell data array has an empty name");
-    if (a.values.size() != mesh.tetrahedra.size())
-      throw Write_error(name, "cell data '" + a.name + "' has " + std::to_string(a.values.size()) +
-                                  " values for " + std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
-    for (std::size_t i = 0; i < a.values.size(); ++i)
-      if (!std::isfinite(a.values[i]))
-        throw Write_error(name, "cell data '" + a.name + "': value " + std::to_string(i) + " is not finite");
-    if (a.name == "label" && !mesh.tetrahedron_labels.empty())
-      throw Write_error(name, "a cell data array is named 'label', the name of the labels");
-  }
-  for (std::size_t i = 0; i < mesh.cell_data.size(); ++i)
-    for (std::size_t j = 0; j < i; ++j)
-      if (mesh.cell_data[i].name == mesh.cell_data[j].name)
-        throw Write_error(name, "two cell data arrays are named '" + mesh.cell_data[i].name + "'");
-}
+/// What the VTK XML writer accepts: binary (appended raw data, default) or ascii, zlib compression
+/// (default when the build has zlib), version 1.0.
+inline constexpr Write_support vtu_write_support{
+    true, true, true, true, true, {"1.0", nullptr, nullptr, nullptr}, nullptr};
 
 template <class Mesh>
-void write_vtu_encoded(std::ostream& out, const Mesh& mesh,
-                       const std::vector<Point_data_array>& extra_point_data, Vtu_encoding encoding,
-                       const std::string& name) {
-  check_mesh_for_writing(mesh, name);
-  check_cell_data_for_writing(mesh, name);
-  std::vector<const Point_data_array*> data;
-  for (const auto& a : mesh.point_data) data.push_back(&a);
-  for (const auto& a : extra_point_data) {
-    check_point_data_for_writing(a, mesh.points.size(), name);
-    data.push_back(&a);
-  }
-  for (std::size_t i = 0; i < data.size(); ++i) {
-    if (data[i]->name.empty()) throw Write_error(name, "a point data array has an empty name");
-    for (std::size_t j = 0; j < i; ++j)
-      if (data[i]->name == data[j]->name)
-        throw Write_error(name, "two point data arrays are named '" + data[i]->name + "'");
-  }
+void write_vtu_stream(std::ostream& out, const Mesh& mesh, const std::vector<Data_array>& extra_point_data,
+                      const Write_options& given, const std::string& name) {
+  const Write_options o = resolve_write_options(given, vtu_write_support, "VTK XML", name);
+  const std::vector<const Data_array*> data = check_named_arrays_for_writing(mesh, extra_point_data, name);
   const std::size_t nv = mesh.points.size(), nt = mesh.tetrahedra.size();
   std::string buf;
-  Vtu_array_writer w(out, buf, name, encoding);
+  Vtu_array_writer w(out, buf, name, o.binary, o.compression == Compression::zlib);
   buf += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
          "byte_order=\"LittleEndian\" header_type=\"UInt64\"";
   buf += w.compressor_attribute();
@@ -130,7 +106,7 @@ void write_vtu_encoded(std::ostream& out, const Mesh& mesh,
     buf += "      <PointData Scalars=\"";
     vtu_escape(buf, data.front()->name);
     buf += "\">\n";
-    for (const Point_data_array* a : data)
+    for (const Data_array* a : data)
       w.write<double>("Float64", a->name, 1, nv, [&](std::size_t i) { return a->values[i]; });
     buf += "      </PointData>\n";
   }
@@ -141,7 +117,7 @@ void write_vtu_encoded(std::ostream& out, const Mesh& mesh,
     if (!mesh.tetrahedron_labels.empty())
       w.write<std::int32_t>("Int32", "label", 1, nt,
                             [&](std::size_t i) { return std::int32_t(mesh.tetrahedron_labels[i]); });
-    for (const Point_data_array& a : mesh.cell_data)
+    for (const Data_array& a : mesh.cell_data)
       w.write<double>("Float64", a.name, 1, nt, [&](std::size_t i) { return a.values[i]; });
     buf += "      </CellData>\n";
   }
@@ -163,86 +139,74 @@ void write_vtu_encoded(std::ostream& out, const Mesh& mesh,
 
 template <class Mesh>
 void write_vtu_file(const std::string& filename, const Mesh& mesh,
-                    const std::vector<Point_data_array>& extra_point_data, Vtu_encoding encoding) {
-  check_mesh_for_writing(mesh, filename);
-  check_cell_data_for_writing(mesh, filename);
-  for (const auto& a : extra_point_data) check_point_data_for_writing(a, mesh.points.size(), filename);
+                    const std::vector<Data_array>& extra_point_data, const Write_options& given) {
+  resolve_write_options(given, vtu_write_support, "VTK XML", filename);
+  check_named_arrays_for_writing(mesh, extra_point_data, filename);
   std::ofstream out;
   open_for_writing(out, filename);
-  write_vtu_encoded(out, mesh, extra_point_data, encoding, filename);
+  write_vtu_stream(out, mesh, extra_point_data, given, filename);
   close_written(out, filename);
-}
-
-template <class NP>
-Vtu_encoding vtu_encoding_from(const NP& np) {
-  const bool binary = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::use_binary_mode), true);
-  return binary ? Vtu_encoding::APPENDED : Vtu_encoding::ASCII;
 }
 
 } // namespace internal
 
 /// \ingroup PkgPRStarOctreeIO
-/// Writes `mesh` to a stream as a VTK XML unstructured grid (`.vtu`): `Float64` points, `Int64`
-/// connectivity and offsets, `UInt8` types (all 10), the point-data arrays of the mesh followed by
-/// `extra_point_data` as `Float64` `PointData` (the first one declared as the active scalars),
-/// the labels, when the mesh has some, as the `Int32` `CellData` array `label` (the active cell
-/// scalars), then the cell-data arrays of the mesh as `Float64` `CellData`.
+/// Writes `mesh` to a stream as a VTK XML unstructured grid (`.vtu`, version 1.0,
+/// `header_type="UInt64"`): `Float64` points, `Int64` connectivity and offsets, `UInt8` types (all
+/// 10), the point-data arrays of the mesh followed by `extra_point_data` as `Float64` `PointData`
+/// (the first one declared as the active scalars), the labels, when the mesh has some, as the
+/// `Int32` `CellData` array `label` (the active cell scalars), then the cell-data arrays of the
+/// mesh as `Float64` `CellData`.
 ///
 /// By default the arrays are appended raw binary data compressed with zlib as ParaView writes them
-/// (`header_type="UInt64"`, `compressor="vtkZLibDataCompressor"`, blocks of 32 KiB; uncompressed
-/// when the build has no zlib); with `CGAL::parameters::use_binary_mode(false)` they are written in
-/// ascii with the shortest decimal form that reads back exactly.  Both are exact.
+/// (`compressor="vtkZLibDataCompressor"`, blocks of 32 KiB; uncompressed when the build has no
+/// zlib); with `use_binary_mode(false)` they are written in ascii with the shortest decimal form
+/// that reads back exactly.  Both are exact.
 ///
 /// \tparam NamedParameters a sequence of named parameters
 /// \param out the stream
 /// \param mesh the mesh
 /// \param extra_point_data per-vertex arrays written after those of the mesh
-/// \param np `use_binary_mode` (default `true`: appended, zlib-compressed)
+/// \param np the write options (`Write_options.h`)
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{use_binary_mode}
+///     \cgalParamDescription{binary (`true`: appended raw data, in the machine's byte order) or
+///       ascii (`false`)}
+///     \cgalParamType{Boolean}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{compression}
+///     \cgalParamDescription{`Compression::zlib` (blocks of 32 KiB, binary only) or `Compression::none`}
+///     \cgalParamType{`CGAL::PR_star_octree::IO::Compression`}
+///     \cgalParamDefault{`Compression::zlib` in binary when the build has zlib, else `Compression::none`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{format_version}
+///     \cgalParamDescription{1.0 only}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{1.0}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \param name the name of the stream in error messages
 /// \throws Write_error when the stream fails, an array does not have one finite value per vertex
-/// (per tetrahedron for cell data), two arrays have the same name, or the mesh is inconsistent.
-template <class Mesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
-void write_vtu(std::ostream& out, const Mesh& mesh,
-               const std::vector<Point_data_array>& extra_point_data = {},
-               const NamedParameters& np = CGAL::parameters::default_values(),
+/// (per tetrahedron for cell data), two arrays have the same name, the mesh is inconsistent, or an
+/// option is not possible.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
+void write_vtu(std::ostream& out, const Mesh& mesh, const std::vector<Data_array>& extra_point_data = {},
+               const NamedParameters& np = parameters::default_values(),
                const std::string& name = "<stream>") {
-  internal::write_vtu_encoded(out, mesh, extra_point_data, internal::vtu_encoding_from(np), name);
+  internal::write_vtu_stream(out, mesh, extra_point_data, internal::write_options(np), name);
 }
 
 /// \ingroup PkgPRStarOctreeIO
-/// Writes `mesh` to a stream as a VTK XML unstructured grid in ascii (`binary == false`) or
-/// uncompressed inline base64 (`binary == true`, `format="binary"`, `header_type="UInt64"`).
-/// \throws Write_error as the other overload.
-template <class Mesh>
-void write_vtu(std::ostream& out, const Mesh& mesh, const std::vector<Point_data_array>& extra_point_data,
-               bool binary, const std::string& name = "<stream>") {
-  internal::write_vtu_encoded(out, mesh, extra_point_data,
-                              binary ? internal::Vtu_encoding::INLINE_BASE64 : internal::Vtu_encoding::ASCII,
-                              name);
-}
-
-/// \ingroup PkgPRStarOctreeIO
-/// Writes `mesh` to the file `filename` as a VTK XML unstructured grid, by default appended and
-/// zlib-compressed (ascii with `CGAL::parameters::use_binary_mode(false)`); see
-/// `write_vtu(std::ostream&, const Mesh&, const std::vector<Point_data_array>&, const NamedParameters&, const
-/// std::string&)`. \throws Write_error when the file cannot be written, or for the reasons given there.
-template <class Mesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+/// Writes `mesh` to the file `filename` as a VTK XML unstructured grid; see
+/// `write_vtu(std::ostream&, const Mesh&, const std::vector<Data_array>&, const NamedParameters&, const
+/// std::string&)`, whose options it takes.
+/// \throws Write_error when the file cannot be written, or for the reasons given there.
+template <class Mesh, class NamedParameters = parameters::Default_named_parameters>
 void write_vtu(const std::string& filename, const Mesh& mesh,
-               const std::vector<Point_data_array>& extra_point_data = {},
-               const NamedParameters& np = CGAL::parameters::default_values()) {
-  internal::write_vtu_file(filename, mesh, extra_point_data, internal::vtu_encoding_from(np));
-}
-
-/// \ingroup PkgPRStarOctreeIO
-/// Writes `mesh` to the file `filename` in ascii (`binary == false`) or uncompressed inline base64
-/// (`binary == true`).
-/// \throws Write_error as the other overloads.
-template <class Mesh>
-void write_vtu(const std::string& filename, const Mesh& mesh,
-               const std::vector<Point_data_array>& extra_point_data, bool binary) {
-  internal::write_vtu_file(filename, mesh, extra_point_data,
-                           binary ? internal::Vtu_encoding::INLINE_BASE64 : internal::Vtu_encoding::ASCII);
+               const std::vector<Data_array>& extra_point_data = {},
+               const NamedParameters& np = parameters::default_values()) {
+  internal::write_vtu_file(filename, mesh, extra_point_data, internal::write_options(np));
 }
 
 } // namespace IO

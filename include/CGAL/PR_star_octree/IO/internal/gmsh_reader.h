@@ -7,12 +7,13 @@
 #define CGAL_PR_STAR_OCTREE_IO_INTERNAL_GMSH_READER_H
 
 // The gmsh `.msh` reader (versions 2.2 and 4.1, ASCII and binary), behind `read_gmsh()` of
-// `CGAL/PR_star_octree/IO/gmsh.h`.  The file is held in memory; one cursor reads its text parts
-// (tokens, with line numbers) and its binary parts (fixed-size values, with byte offsets).
+// `CGAL/PR_star_octree/IO/gmsh.h`.  The file is held in memory; one cursor (the readers' `Byte_cursor`)
+// reads its text parts (tokens, with line numbers) and its binary parts (fixed-size values, with byte
+// offsets).
 
 #include <CGAL/PR_star_octree/IO/Memory_limit.h>
 #include <CGAL/PR_star_octree/IO/Read_error.h>
-#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
+#include <CGAL/PR_star_octree/IO/internal/file_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 
 #include <algorithm>
@@ -168,12 +169,12 @@ private:
 
 /// Reads a whole `.msh` file held in memory into `result`.
 template <class Mesh>
-class Gmsh_reader {
+class Gmsh_reader : private Byte_cursor {
   using Point_3 = typename Mesh::Point_3;
   using Index = typename Mesh::Index;
 
 public:
-  Gmsh_reader(std::string_view data, std::string name) : d_(data), name_(std::move(name)) {}
+  Gmsh_reader(std::string_view data, std::string name) : Byte_cursor(data, std::move(name)) {}
 
   void read(Mesh& result) {
     read_mesh_format();
@@ -225,8 +226,8 @@ private:
   [[noreturn]] void fail(const std::string& message) const {
     if (binary_) throw Read_error(name_, 0, "byte " + std::to_string(pos_) + ": " + message);
     // the line is counted only now: reading does not count line breaks
-    const std::size_t at = std::min(pos_, d_.size());
-    throw Read_error(name_, 1 + static_cast<std::size_t>(std::count(d_.begin(), d_.begin() + at, '\n')),
+    const std::size_t at = std::min(pos_, data_.size());
+    throw Read_error(name_, 1 + static_cast<std::size_t>(std::count(data_.begin(), data_.begin() + at, '\n')),
                      message);
   }
   [[noreturn]] void fail_eof(const char* what) const {
@@ -240,21 +241,21 @@ private:
 
   /// Skips white space; false at the end of the data.
   bool skip_space() {
-    const std::size_t n = d_.size();
-    while (pos_ < n && space(d_[pos_])) ++pos_;
+    const std::size_t n = data_.size();
+    while (pos_ < n && space(data_[pos_])) ++pos_;
     return pos_ < n;
   }
   std::string_view token(const char* what) {
     if (!skip_space()) fail_eof(what);
     const std::size_t b = pos_;
-    while (pos_ < d_.size() && !space(d_[pos_])) ++pos_;
-    return d_.substr(b, pos_ - b);
+    while (pos_ < data_.size() && !space(data_[pos_])) ++pos_;
+    return data_.substr(b, pos_ - b);
   }
   long long integer(const char* what) {
     long long v;
     if (skip_space()) { // fast path: plain digits
-      if (const char* e = scan_plain_integer(d_.data() + pos_, d_.data() + d_.size(), v, 0)) {
-        pos_ = static_cast<std::size_t>(e - d_.data());
+      if (const char* e = scan_plain_integer(data_.data() + pos_, data_.data() + data_.size(), v, 0)) {
+        pos_ = static_cast<std::size_t>(e - data_.data());
         return v;
       }
     }
@@ -278,8 +279,8 @@ private:
   double real(const char* what) {
     double v;
     if (skip_space()) { // fast path: a plain finite number
-      if (const char* e = scan_plain_double(d_.data() + pos_, d_.data() + d_.size(), v, 0)) {
-        pos_ = static_cast<std::size_t>(e - d_.data());
+      if (const char* e = scan_plain_double(data_.data() + pos_, data_.data() + data_.size(), v, 0)) {
+        pos_ = static_cast<std::size_t>(e - data_.data());
         return v;
       }
     }
@@ -289,15 +290,15 @@ private:
   }
   /// Consumes the rest of the current line, which must be blank.
   void end_line(const char* after) {
-    while (pos_ < d_.size() && (d_[pos_] == ' ' || d_[pos_] == '\t' || d_[pos_] == '\r')) ++pos_;
-    if (pos_ >= d_.size()) fail_eof("a line break");
-    if (d_[pos_] != '\n')
-      fail(std::string("unexpected data after ") + after + ": " + quote(d_.substr(pos_, 20)));
+    while (pos_ < data_.size() && (data_[pos_] == ' ' || data_[pos_] == '\t' || data_[pos_] == '\r')) ++pos_;
+    if (pos_ >= data_.size()) fail_eof("a line break");
+    if (data_[pos_] != '\n')
+      fail(std::string("unexpected data after ") + after + ": " + quote(data_.substr(pos_, 20)));
     ++pos_;
   }
   /// Moves past the next line break.
   void skip_line(const char* what) {
-    const std::size_t eol = d_.find('\n', pos_);
+    const std::size_t eol = data_.find('\n', pos_);
     if (eol == std::string_view::npos) fail_eof(what);
     pos_ = eol + 1;
   }
@@ -305,12 +306,7 @@ private:
   // ---- binary
   template <class T>
   T bin(const char* what) {
-    if (d_.size() - pos_ < sizeof(T))
-      fail(std::string("unexpected end of file in ") + what + " (" + std::to_string(sizeof(T)) +
-           " bytes needed, " + std::to_string(d_.size() - pos_) + " left)");
-    const T v = load_value<T>(d_.data() + pos_, swap_);
-    pos_ += sizeof(T);
-    return v;
+    return get<T>(what); // binary parts only: the cursor's error is the one of fail() ("byte N: ...")
   }
   /// A gmsh 4.1 `size_t` (data-size bytes).
   std::uint64_t bin_size(const char* what) {
@@ -318,8 +314,8 @@ private:
   }
   /// Fails unless `count` items of `bytes` bytes each fit in what remains of the file.
   void need_items(std::uint64_t count, std::size_t bytes, const char* what) {
-    if (bytes != 0 && count > (d_.size() - pos_) / bytes)
-      fail(std::to_string(count) + " " + what + " announced, but only " + std::to_string(d_.size() - pos_) +
+    if (!fits(count, bytes))
+      fail(std::to_string(count) + " " + what + " announced, but only " + std::to_string(remaining()) +
            " bytes are left in the file (" + std::to_string(bytes) + " bytes each)");
   }
 
@@ -339,10 +335,10 @@ private:
   }
   void skip_section(std::string_view section) {
     const std::string end = "\n$End" + std::string(section.substr(1));
-    std::size_t at = d_.find(end, pos_);
+    std::size_t at = data_.find(end, pos_);
     // the end marker must end its line
-    while (at != std::string_view::npos && at + end.size() < d_.size() && !space(d_[at + end.size()]))
-      at = d_.find(end, at + 1);
+    while (at != std::string_view::npos && at + end.size() < data_.size() && !space(data_[at + end.size()]))
+      at = data_.find(end, at + 1);
     if (at == std::string_view::npos)
       fail("unexpected end of file: no " + end.substr(1) + " for " + std::string(section));
     pos_ = at + end.size();
@@ -371,15 +367,10 @@ private:
     if (type == 1) {
       end_line("the format line");
       binary_ = true;
-      if (d_.size() - pos_ < 4) fail_eof("the endianness integer 1");
-      const std::int32_t one = load_value<std::int32_t>(d_.data() + pos_, false);
-      if (one == 1)
-        swap_ = false;
-      else if (byte_swapped(one) == 1)
-        swap_ = true;
-      else
-        fail("bad endianness integer " + std::to_string(one) + " (must be 1 in either byte order)");
-      pos_ += 4;
+      if (remaining() < 4) fail_eof("the endianness integer 1");
+      if (!take_byte_order_mark())
+        fail("bad endianness integer " + std::to_string(load_value<std::int32_t>(here(), false)) +
+             " (must be 1 in either byte order)");
     }
     expect_end("$MeshFormat");
   }
@@ -390,10 +381,10 @@ private:
       const int dim = small_int("physical dimension");
       const int tag = small_int("physical tag");
       if (!skip_space()) fail_eof("a physical name");
-      if (d_[pos_] != '"') fail("expected a quoted physical name, found " + quote(d_.substr(pos_, 20)));
-      const std::size_t close = d_.find_first_of("\"\n", pos_ + 1);
-      if (close == std::string_view::npos || d_[close] != '"') fail("unterminated physical name");
-      const std::string_view name = d_.substr(pos_ + 1, close - pos_ - 1);
+      if (data_[pos_] != '"') fail("expected a quoted physical name, found " + quote(data_.substr(pos_, 20)));
+      const std::size_t close = data_.find_first_of("\"\n", pos_ + 1);
+      if (close == std::string_view::npos || data_[close] != '"') fail("unterminated physical name");
+      const std::string_view name = data_.substr(pos_ + 1, close - pos_ - 1);
       pos_ = close + 1;
       if (dim == 3) mesh_.label_names[tag] = std::string(name);
     }
@@ -473,7 +464,7 @@ private:
       count("maximum node tag");
       check_node_count(total);
     }
-    const std::size_t left = d_.size() - pos_;
+    const std::size_t left = data_.size() - pos_;
     check_memory_if_present(name_, 0, total, 0, sizeof(typename Mesh::Point_3) + 8,
                             sizeof(typename Mesh::Tetrahedron) + sizeof(int), total,
                             binary_ ? size_bytes_ + 24 : 8, left);
@@ -507,7 +498,7 @@ private:
       if (binary_) {
         need_items(n, size_bytes_ + 8 * values, "nodes");
         const std::size_t nn = static_cast<std::size_t>(n);
-        const char* p = d_.data() + pos_;
+        const char* p = data_.data() + pos_;
         for (std::size_t i = 0; i < nn; ++i) {
           const std::uint64_t tag = size_bytes_ == 8 ? load_value<std::uint64_t>(p + 8 * i, swap_)
                                                      : load_value<std::uint32_t>(p + 4 * i, swap_);
@@ -515,7 +506,7 @@ private:
           tags_.push_back(tag);
         }
         pos_ += nn * size_bytes_;
-        p = d_.data() + pos_;
+        p = data_.data() + pos_;
         for (std::size_t i = 0; i < nn; ++i, p += 8 * values)
           add_point(load_value<double>(p, swap_), load_value<double>(p + 8, swap_),
                     load_value<double>(p + 16, swap_), first + i);
@@ -544,7 +535,7 @@ private:
       end_line("the number of nodes");
       need_items(n, 28, "nodes");
     }
-    const std::size_t left = d_.size() - pos_;
+    const std::size_t left = data_.size() - pos_;
     check_memory_if_present(name_, 0, n, 0, sizeof(typename Mesh::Point_3) + 8,
                             sizeof(typename Mesh::Tetrahedron) + sizeof(int), n, binary_ ? 28 : 8, left);
     const std::size_t cap = static_cast<std::size_t>(std::min<std::uint64_t>(n, left));
@@ -552,7 +543,7 @@ private:
     capped_reserve(tags_, cap, left, binary_ ? 28 : 8);
     advise_node_arrays();
     if (binary_) {
-      const char* p = d_.data() + pos_;
+      const char* p = data_.data() + pos_;
       for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i, p += 28) {
         const std::int32_t tag = load_value<std::int32_t>(p, swap_);
         if (tag <= 0)
@@ -599,7 +590,7 @@ private:
   /// Reserves room for at most `n` tetrahedra, and no more than the rest of the file can hold at
   /// `min_bytes` bytes per tetrahedron.
   void reserve_tetrahedra(std::uint64_t n, std::size_t min_bytes) {
-    const std::size_t left = d_.size() - pos_;
+    const std::size_t left = data_.size() - pos_;
     check_memory_if_present(name_, 0, mesh_.points.size(), n, sizeof(typename Mesh::Point_3) + 8,
                             sizeof(typename Mesh::Tetrahedron) + sizeof(int), n, min_bytes, left);
     const std::size_t k = static_cast<std::size_t>(std::min<std::uint64_t>(n, left / min_bytes + 1));
@@ -673,7 +664,7 @@ private:
         }
         std::uint64_t v[4];
         for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
-          const char* p = d_.data() + pos_;
+          const char* p = data_.data() + pos_;
           const std::uint64_t tag =
               size_bytes_ == 8 ? load_value<std::uint64_t>(p, swap_) : load_value<std::uint32_t>(p, swap_);
           for (int k = 0; k < 4; ++k)
@@ -733,7 +724,7 @@ private:
         }
         std::uint64_t v[4];
         for (std::int32_t i = 0; i < follow; ++i) {
-          const char* p = d_.data() + pos_;
+          const char* p = data_.data() + pos_;
           const std::int32_t tag = load_value<std::int32_t>(p, swap_);
           const int physical = ntags > 0 ? load_value<std::int32_t>(p + 4, swap_) : 0;
           const char* nodes = p + 4 * (1 + static_cast<std::size_t>(ntags));
@@ -775,12 +766,8 @@ private:
     }
   }
 
-  std::string_view d_;
-  std::string name_;
-  std::size_t pos_ = 0;
   int version_ = 0;
   bool binary_ = false;
-  bool swap_ = false;
   std::size_t size_bytes_ = 8;
   bool has_entities_ = false;
   bool any_label_ = false;

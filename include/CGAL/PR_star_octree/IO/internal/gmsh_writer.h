@@ -10,7 +10,7 @@
 // `CGAL/PR_star_octree/IO/gmsh.h`.
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
-#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
+#include <CGAL/PR_star_octree/IO/internal/file_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 
 #include <algorithm>

@@ -547,7 +547,7 @@ inline void flush_buffer(std::ostream& out, std::string& buffer, const std::stri
 }
 
 /// Checks that a point-data array has `nv` finite values.
-inline void check_point_data_for_writing(const Point_data_array& a, std::size_t nv, const std::string& name) {
+inline void check_point_data_for_writing(const Data_array& a, std::size_t nv, const std::string& name) {
   if (a.values.size() != nv)
     throw Write_error(name, "point data '" + a.name + "' has " + std::to_string(a.values.size()) +
                                 " values for " + std::to_string(nv) + " vertices");
@@ -578,6 +578,51 @@ void check_mesh_for_writing(const Mesh& mesh, const std::string& name) {
                                 " tetrahedron labels for " + std::to_string(mesh.tetrahedra.size()) +
                                 " tetrahedra");
   for (const auto& a : mesh.point_data) check_point_data_for_writing(a, nv, name);
+}
+
+/// Checks the cell-data arrays of a mesh before writing: one finite value per tetrahedron, a
+/// name of its own, not `label` when the mesh has labels (the name the writers give them).
+template <class Mesh>
+void check_cell_data_for_writing(const Mesh& mesh, const std::string& name) {
+  for (const Data_array& a : mesh.cell_data) {
+    if (a.name.empty()) throw Write_error(name, "a cell data array has an empty name");
+    if (a.values.size() != mesh.tetrahedra.size())
+      throw Write_error(name, "cell data '" + a.name + "' has " + std::to_string(a.values.size()) +
+                                  " values for " + std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
+    for (std::size_t i = 0; i < a.values.size(); ++i)
+      if (!std::isfinite(a.values[i]))
+        throw Write_error(name, "cell data '" + a.name + "': value " + std::to_string(i) + " is not finite");
+    if (a.name == "label" && !mesh.tetrahedron_labels.empty())
+      throw Write_error(name, "a cell data array is named 'label', the name of the labels");
+  }
+  for (std::size_t i = 0; i < mesh.cell_data.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (mesh.cell_data[i].name == mesh.cell_data[j].name)
+        throw Write_error(name, "two cell data arrays are named '" + mesh.cell_data[i].name + "'");
+}
+
+/// The checks of the writers of named arrays (VTK legacy and XML): the mesh, its cell data, and the
+/// point-data arrays of the mesh followed by `extra_point_data` (one finite value per vertex, a
+/// name of its own).  Returns these point-data arrays, in that order.
+template <class Mesh>
+std::vector<const Data_array*> check_named_arrays_for_writing(const Mesh& mesh,
+                                                              const std::vector<Data_array>& extra_point_data,
+                                                              const std::string& name) {
+  check_mesh_for_writing(mesh, name);
+  check_cell_data_for_writing(mesh, name);
+  std::vector<const Data_array*> data;
+  for (const auto& a : mesh.point_data) data.push_back(&a);
+  for (const auto& a : extra_point_data) {
+    check_point_data_for_writing(a, mesh.points.size(), name);
+    data.push_back(&a);
+  }
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    if (data[i]->name.empty()) throw Write_error(name, "a point data array has an empty name");
+    for (std::size_t j = 0; j < i; ++j)
+      if (data[i]->name == data[j]->name)
+        throw Write_error(name, "two point data arrays are named '" + data[i]->name + "'");
+  }
+  return data;
 }
 
 /// Opens `filename` for writing, throwing `Write_error` on failure.

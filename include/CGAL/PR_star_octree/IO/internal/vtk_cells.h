@@ -10,7 +10,7 @@
 // (offsets, connectivity, types) arrays into tetrahedra with all the checks, the names of the
 // cell-data arrays read as tetrahedron labels.
 
-#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
+#include <CGAL/PR_star_octree/IO/internal/file_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 
 #include <cmath>

@@ -9,7 +9,7 @@
 // The legacy VTK (.vtk) reader and writer: ASCII and binary (big-endian), versions 4.x and 5.x.
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
-#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
+#include <CGAL/PR_star_octree/IO/internal/file_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 #include <CGAL/PR_star_octree/IO/internal/vtk_cells.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
@@ -32,13 +32,6 @@ namespace CGAL {
 namespace PR_star_octree {
 namespace IO {
 namespace internal {
-
-inline bool host_little_endian() {
-  const std::uint16_t one = 1;
-  unsigned char c;
-  std::memcpy(&c, &one, 1);
-  return c == 1;
-}
 
 inline bool is_legacy_vtk_type(std::string_view t) {
   static const char* types[] = {
@@ -166,41 +159,29 @@ public:
       r.fail("unexpected end of file in the binary " + std::string(what) + " data at byte " +
              std::to_string(begin) + ": " + std::to_string(count) + " values of " + std::to_string(size) +
              " bytes announced, " + std::to_string(left) + " bytes left");
-    const unsigned char* p = reinterpret_cast<const unsigned char*>(text_.data()) + begin;
+    Byte_cursor c(text_, r.name(), host_is_little_endian()); // big-endian data
+    c.seek(begin);
     if (dout) dout->reserve(dout->size() + count);
     if (iout) iout->reserve(iout->size() + count);
     if (dout != nullptr || iout != nullptr) {
-      for (std::size_t i = 0; i < count; ++i, p += size) {
-        std::uint64_t bits = 0;
-        for (std::size_t k = 0; k < size; ++k) bits = (bits << 8) | p[k]; // big-endian
+      for (std::size_t i = 0; i < count; ++i) {
         const auto bad = [&](const char* why) {
           r.fail(std::string(what) + " value " + std::to_string(i) + " (byte " +
                  std::to_string(begin + i * size) + ") " + why);
         };
         if (kind == 2) {
-          double v;
-          if (size == 4) {
-            const std::uint32_t b32 = static_cast<std::uint32_t>(bits);
-            float f;
-            std::memcpy(&f, &b32, 4);
-            v = f;
-          } else {
-            std::memcpy(&v, &bits, 8);
-          }
+          const double v = c.get_real(size, what);
           if (!std::isfinite(v)) bad("is not finite");
           dout->push_back(v);
           continue;
         }
         long long x;
         if (kind == 1) {
-          if (bits > static_cast<std::uint64_t>(std::numeric_limits<long long>::max())) bad("is too large");
-          x = static_cast<long long>(bits);
-        } else if (size == 8) {
-          x = static_cast<long long>(bits);
+          const std::uint64_t u = c.get_unsigned(size, what);
+          if (u > static_cast<std::uint64_t>(std::numeric_limits<long long>::max())) bad("is too large");
+          x = static_cast<long long>(u);
         } else {
-          const std::uint64_t sign = std::uint64_t(1) << (8 * size - 1);
-          x = (bits & sign) ? static_cast<long long>(bits) - static_cast<long long>(sign << 1)
-                            : static_cast<long long>(bits);
+          x = c.get_signed(size, what);
         }
         if (iout)
           iout->push_back(x);
@@ -265,7 +246,7 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
   bool implicit_starts = false, compact_cells = false;
   std::vector<std::uint32_t> compact;
   std::vector<double> coordinates;
-  std::vector<Point_data_array> cell_arrays; // one-component cell data, labels among them
+  std::vector<Data_array> cell_arrays; // one-component cell data, labels among them
   std::size_t nv = 0, nc = 0;
   enum { NONE, POINT, CELL } attribute_mode = NONE;
   bool seen_point_data = false, seen_cell_data = false;
@@ -278,12 +259,12 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
     if (attribute_mode == POINT && components == 1) {
       for (const auto& a : mesh.point_data)
         if (a.name == array_name) r.fail("duplicate point data array " + quote(array_name));
-      mesh.point_data.push_back(Point_data_array{array_name, {}});
+      mesh.point_data.push_back(Data_array{array_name, {}});
       p.values(count, &mesh.point_data.back().values, what, type);
     } else if (attribute_mode == CELL && components == 1) {
       for (const auto& a : cell_arrays)
         if (a.name == array_name) r.fail("duplicate cell data array " + quote(array_name));
-      cell_arrays.push_back(Point_data_array{array_name, {}});
+      cell_arrays.push_back(Data_array{array_name, {}});
       p.values(count, &cell_arrays.back().values, what, type);
     } else {
       p.values(count, nullptr, what, type);
@@ -522,7 +503,7 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
                             cell_fail);
   }
   bool has_labels = false;
-  for (Point_data_array& a : cell_arrays) {
+  for (Data_array& a : cell_arrays) {
     vtk_keep_cells(a.values, kept);
     if (!has_labels && is_vtk_label_array_name(a.name) && vtk_integer_valued(a.values)) {
       vtk_labels_to_int(a.values, mesh.tetrahedron_labels,
@@ -553,23 +534,9 @@ inline std::string vtk_encode_name(const std::string& s) {
 
 /// Writes legacy VTK 4.2 (readable by VTK 5 to 9, ParaView and meshio), ascii or binary (big-endian).
 template <class Mesh>
-void write_vtk_stream(std::ostream& out, const Mesh& mesh,
-                      const std::vector<Point_data_array>& extra_point_data, bool binary,
-                      const std::string& name) {
-  check_mesh_for_writing(mesh, name);
-  std::vector<const Point_data_array*> data;
-  for (const auto& a : mesh.point_data) data.push_back(&a);
-  for (const auto& a : extra_point_data) {
-    check_point_data_for_writing(a, mesh.points.size(), name);
-    data.push_back(&a);
-  }
-  for (const auto& a : mesh.cell_data) {
-    if (a.values.size() != mesh.tetrahedra.size())
-      throw Write_error(name, "cell data '" + a.name + "' has " + std::to_string(a.values.size()) +
-                                  " values for " + std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
-    for (double v : a.values)
-      if (!std::isfinite(v)) throw Write_error(name, "cell data '" + a.name + "' has a non-finite value");
-  }
+void write_vtk_stream(std::ostream& out, const Mesh& mesh, const std::vector<Data_array>& extra_point_data,
+                      bool binary, const std::string& name) {
+  const std::vector<const Data_array*> data = check_named_arrays_for_writing(mesh, extra_point_data, name);
   const std::size_t nv = mesh.points.size(), nt = mesh.tetrahedra.size();
   if (binary && (nt > std::size_t(0x7fffffff) / 5 || nv > std::size_t(0x7fffffff)))
     throw Write_error(name,
@@ -578,7 +545,7 @@ void write_vtk_stream(std::ostream& out, const Mesh& mesh,
   const auto put_be = [&](const void* v, std::size_t size) {
     unsigned char b[8];
     std::memcpy(b, v, size);
-    if (host_little_endian())
+    if (host_is_little_endian())
       for (std::size_t k = 0; k < size / 2; ++k) std::swap(b[k], b[size - 1 - k]);
     buf.append(reinterpret_cast<const char*>(b), size);
   };

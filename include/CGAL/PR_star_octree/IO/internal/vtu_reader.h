@@ -13,7 +13,7 @@
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/internal/base64.h>
 #include <CGAL/PR_star_octree/IO/internal/decompress.h>
-#include <CGAL/PR_star_octree/IO/internal/gmsh_bytes.h>
+#include <CGAL/PR_star_octree/IO/internal/file_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 #include <CGAL/PR_star_octree/IO/internal/vtk_cells.h>
 #include <CGAL/PR_star_octree/IO/internal/xml.h>
@@ -40,33 +40,27 @@ namespace PR_star_octree {
 namespace IO {
 namespace internal {
 
-inline bool host_is_little_endian() {
-  const std::uint16_t one = 1;
-  unsigned char c;
-  std::memcpy(&c, &one, 1);
-  return c == 1;
-}
-
-/// A sequential source of bytes: raw bytes of the file (appended raw data) or base64 text.
+/// A sequential source of bytes: raw bytes of the file (appended raw data, read by the readers'
+/// `Byte_cursor`) or base64 text.
 class Vtu_byte_source {
 public:
   /// raw bytes `data[0..size)`, at byte `file_offset` of the file
   Vtu_byte_source(const char* data, std::size_t size, std::size_t file_offset)
-      : raw_(reinterpret_cast<const unsigned char*>(data)), size_(size), base_(file_offset),
+      : raw_(std::string_view(data, size), std::string()), is_raw_(true), base_(file_offset),
         dec_(std::string_view()), released_(data) {}
   /// base64 text at byte `file_offset` of the file (when it is one piece of the file)
   Vtu_byte_source(std::string_view base64, std::size_t file_offset)
-      : base_(file_offset), dec_(base64), released_(base64.data()) {}
+      : raw_(std::string_view(), std::string()), base_(file_offset), dec_(base64), released_(base64.data()) {}
 
-  bool is_raw() const { return raw_ != nullptr; }
+  bool is_raw() const { return is_raw_; }
 
   /// Fills `dst[0..n)`; false when the data end first or are not valid base64 (see `error()`).
   bool read(unsigned char* dst, std::size_t n) {
     release_consumed();
-    if (raw_ != nullptr) {
-      if (size_ - pos_ < n) return false;
-      std::memcpy(dst, raw_ + pos_, n);
-      pos_ += n;
+    if (is_raw_) {
+      if (raw_.remaining() < n) return false;
+      std::memcpy(dst, raw_.here(), n);
+      raw_.skip(n, "data");
       return true;
     }
     return dec_.read(dst, n);
@@ -76,10 +70,10 @@ public:
   /// they are not there.
   const unsigned char* take(std::size_t n, std::vector<unsigned char>& storage) {
     release_consumed(); // what earlier calls returned has been used
-    if (raw_ != nullptr) {
-      if (size_ - pos_ < n) return nullptr;
-      const unsigned char* p = raw_ + pos_;
-      pos_ += n;
+    if (is_raw_) {
+      if (raw_.remaining() < n) return nullptr;
+      const unsigned char* p = reinterpret_cast<const unsigned char*>(raw_.here());
+      raw_.skip(n, "data");
       return p;
     }
     storage.resize(n);
@@ -87,13 +81,13 @@ public:
   }
 
   /// An upper bound of the number of bytes that can still be read.
-  std::size_t max_remaining() const { return raw_ != nullptr ? size_ - pos_ : dec_.max_remaining_bytes(); }
+  std::size_t max_remaining() const { return is_raw_ ? raw_.remaining() : dec_.max_remaining_bytes(); }
 
   /// The byte offset in the file of the next byte (of its base64 text when encoded).
-  std::size_t file_offset() const { return raw_ != nullptr ? base_ + pos_ : base_; }
+  std::size_t file_offset() const { return is_raw_ ? base_ + raw_.offset() : base_; }
 
   std::string error() const {
-    if (raw_ != nullptr) return "the data end too early";
+    if (is_raw_) return "the data end too early";
     return dec_.error() ? dec_.error() : "invalid base64 data";
   }
 
@@ -101,15 +95,16 @@ private:
   // The file bytes read so far leave the resident memory every 32 MB (a mapped file only: see
   // `release_file_pages()`), so that reading a file of gigabytes does not hold it all.
   void release_consumed() {
-    const char* now = raw_ != nullptr ? reinterpret_cast<const char*>(raw_ + pos_) : dec_.position();
+    const char* now = is_raw_ ? raw_.here() : dec_.position();
     if (now - released_ >= (std::ptrdiff_t(1) << 25)) {
       release_file_pages(released_, now);
       released_ = now;
     }
   }
 
-  const unsigned char* raw_ = nullptr;
-  std::size_t size_ = 0, pos_ = 0, base_ = 0;
+  Byte_cursor raw_;
+  bool is_raw_ = false;
+  std::size_t base_ = 0;
   Base64_decoder dec_;
   const char* released_;
 };
@@ -732,7 +727,7 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
         if (pi == 0) {
           for (const auto& existing : mesh.point_data)
             if (existing.name == array_name) fail(*a, "duplicate point data array '" + array_name + "'");
-          mesh.point_data.push_back(Point_data_array{array_name, {}});
+          mesh.point_data.push_back(Data_array{array_name, {}});
         } else if (k >= mesh.point_data.size() || mesh.point_data[k].name != array_name) {
           fail(*a, "the point data of piece " + std::to_string(pi) + " differ from those of the first piece");
         }
@@ -790,7 +785,7 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
         if (pi == 0) {
           for (const auto& existing : mesh.cell_data)
             if (existing.name == array_name) fail(*a, "duplicate cell data array '" + array_name + "'");
-          mesh.cell_data.push_back(Point_data_array{array_name, {}});
+          mesh.cell_data.push_back(Data_array{array_name, {}});
         } else if (kc >= mesh.cell_data.size() || mesh.cell_data[kc].name != array_name) {
           fail(*a, "the cell data of piece " + std::to_string(pi) + " differ from those of the first piece");
         }

@@ -9,8 +9,8 @@
 // The VTK XML UnstructuredGrid (.vtu) writer: escaping and data arrays.
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
-#include <CGAL/PR_star_octree/IO/internal/base64.h>
 #include <CGAL/PR_star_octree/IO/internal/decompress.h>
+#include <CGAL/PR_star_octree/IO/internal/file_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 
 #include <cstddef>
@@ -51,11 +51,11 @@ inline void vtu_escape(std::string& out, const std::string& s) {
   }
 }
 
-/// Writes one DataArray: `get(i)` gives value `i` (of `count`) as `T`.
+/// Writes one ascii DataArray: `get(i)` gives value `i` (of `count`) as `T`.
 template <class T, class Get>
-void vtu_write_array(std::ostream& out, std::string& buf, const std::string& file, const char* vtk_type,
-                     const std::string& array_name, std::size_t components, std::size_t count, bool binary,
-                     const Get& get) {
+void vtu_write_ascii_array(std::ostream& out, std::string& buf, const std::string& file, const char* vtk_type,
+                           const std::string& array_name, std::size_t components, std::size_t count,
+                           const Get& get) {
   buf += "        <DataArray type=\"";
   buf += vtk_type;
   buf += '"';
@@ -69,64 +69,30 @@ void vtu_write_array(std::ostream& out, std::string& buf, const std::string& fil
     append_integer(buf, components);
     buf += '"';
   }
-  buf += binary ? " format=\"binary\">\n" : " format=\"ascii\">\n";
-  if (binary) {
-    Base64_encoder enc(buf);
-    const bool swap = !host_is_little_endian();
-    const auto put = [&](const void* p, std::size_t n) {
-      unsigned char b[8];
-      std::memcpy(b, p, n);
-      if (swap)
-        for (std::size_t i = 0; i < n / 2; ++i) std::swap(b[i], b[n - 1 - i]);
-      enc.write(b, n);
-    };
-    const std::uint64_t nbytes = static_cast<std::uint64_t>(count) * sizeof(T);
-    put(&nbytes, 8);
-    for (std::size_t i = 0; i < count; ++i) {
-      const T v = get(i);
-      put(&v, sizeof(T));
-      flush_buffer(out, buf, file);
+  buf += " format=\"ascii\">\n";
+  const std::size_t per_line = components == 1 ? 6 : components;
+  for (std::size_t i = 0; i < count; ++i) {
+    if constexpr (std::is_floating_point<T>::value) {
+      append_double(buf, get(i));
+    } else {
+      append_integer(buf, get(i));
     }
-    enc.finish();
-    buf += '\n';
-  } else {
-    const std::size_t per_line = components == 1 ? 6 : components;
-    for (std::size_t i = 0; i < count; ++i) {
-      if constexpr (std::is_floating_point<T>::value) {
-        append_double(buf, get(i));
-      } else {
-        append_integer(buf, get(i));
-      }
-      buf += ((i + 1) % per_line == 0 || i + 1 == count) ? '\n' : ' ';
-      flush_buffer(out, buf, file);
-    }
+    buf += ((i + 1) % per_line == 0 || i + 1 == count) ? '\n' : ' ';
+    flush_buffer(out, buf, file);
   }
   buf += "        </DataArray>\n";
   flush_buffer(out, buf, file);
 }
 
-/// How `write_vtu()` stores the data arrays.
-enum class Vtu_encoding {
-  ASCII,         ///< text, shortest exact decimal form
-  INLINE_BASE64, ///< `format="binary"`, uncompressed, UInt64 header
-  APPENDED       ///< `format="appended"`, raw `<AppendedData>`, zlib-compressed when zlib was found
-};
-
-/// The appended form (as ParaView writes): `header_type="UInt64"`, each array in blocks of
-/// 32 KiB compressed by zlib (`vtkZLibDataCompressor`) when the build has zlib, raw otherwise.
+/// The appended form (as ParaView writes): `header_type="UInt64"`, raw binary data, each array
+/// in blocks of 32 KiB compressed by zlib (`vtkZLibDataCompressor`) when `zlib`, else in one piece.
 class Vtu_appended_arrays {
 public:
   static constexpr std::size_t block_size = 32768;
 
-  explicit Vtu_appended_arrays(int level) : level_(level) {}
+  Vtu_appended_arrays(bool zlib, int level) : zlib_(zlib), level_(level) {}
 
-  static bool compressed() {
-#ifdef CGAL_PR_STAR_OCTREE_HAS_ZLIB
-    return true;
-#else
-    return false;
-#endif
-  }
+  bool compressed() const { return zlib_; }
 
   /// Adds one array (`get(i)` is value `i`, of `count`, as `T`); returns its offset.
   template <class T, class Get>
@@ -147,7 +113,10 @@ public:
       for (std::size_t i = 0; i < count; ++i) append_value(data_, get(i), swap);
       return offset;
     }
-#ifdef CGAL_PR_STAR_OCTREE_HAS_ZLIB
+#ifndef CGAL_PR_STAR_OCTREE_HAS_ZLIB
+    throw Write_error(file,
+                      "zlib compression is not available: zlib was not found when this program was built");
+#else
     const std::size_t nb = static_cast<std::size_t>((nbytes + block_size - 1) / block_size);
     std::string blocks;
     std::vector<std::uint64_t> sizes;
@@ -188,23 +157,23 @@ private:
     dst.append(reinterpret_cast<const char*>(b), sizeof(T));
   }
 
+  bool zlib_;
   int level_;
   std::string data_;
 };
 
-/// Writes the DataArray elements in one of the encodings (the appended data at the end).
+/// Writes the DataArray elements, ascii or appended (the appended data at the end).
 class Vtu_array_writer {
 public:
-  Vtu_array_writer(std::ostream& out, std::string& buf, const std::string& file, Vtu_encoding encoding,
+  Vtu_array_writer(std::ostream& out, std::string& buf, const std::string& file, bool binary, bool zlib,
                    int level = 1)
-      : out_(out), buf_(buf), file_(file), encoding_(encoding), appended_(level) {}
+      : out_(out), buf_(buf), file_(file), binary_(binary), appended_(zlib, level) {}
 
   template <class T, class Get>
   void write(const char* vtk_type, const std::string& array_name, std::size_t components, std::size_t count,
              const Get& get) {
-    if (encoding_ != Vtu_encoding::APPENDED) {
-      vtu_write_array<T>(out_, buf_, file_, vtk_type, array_name, components, count,
-                         encoding_ == Vtu_encoding::INLINE_BASE64, get);
+    if (!binary_) {
+      vtu_write_ascii_array<T>(out_, buf_, file_, vtk_type, array_name, components, count, get);
       return;
     }
     const std::size_t offset = appended_.add<T>(count, get, file_);
@@ -228,14 +197,12 @@ public:
 
   /// the `compressor` attribute of `<VTKFile>` (with its leading space), possibly empty
   const char* compressor_attribute() const {
-    return encoding_ == Vtu_encoding::APPENDED && Vtu_appended_arrays::compressed()
-               ? " compressor=\"vtkZLibDataCompressor\""
-               : "";
+    return binary_ && appended_.compressed() ? " compressor=\"vtkZLibDataCompressor\"" : "";
   }
 
   /// Writes what follows `</UnstructuredGrid>`: the appended data, if any.
   void finish() {
-    if (encoding_ != Vtu_encoding::APPENDED) return;
+    if (!binary_) return;
     buf_ += "  <AppendedData encoding=\"raw\">\n   _";
     flush_buffer(out_, buf_, file_, true);
     const std::string& d = appended_.data();
@@ -248,7 +215,7 @@ private:
   std::ostream& out_;
   std::string& buf_;
   const std::string& file_;
-  Vtu_encoding encoding_;
+  bool binary_;
   Vtu_appended_arrays appended_;
 };
 

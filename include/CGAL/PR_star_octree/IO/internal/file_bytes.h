@@ -3,12 +3,13 @@
 //
 // Author(s): The PR-star octree project
 
-#ifndef CGAL_PR_STAR_OCTREE_IO_INTERNAL_GMSH_BYTES_H
-#define CGAL_PR_STAR_OCTREE_IO_INTERNAL_GMSH_BYTES_H
+#ifndef CGAL_PR_STAR_OCTREE_IO_INTERNAL_FILE_BYTES_H
+#define CGAL_PR_STAR_OCTREE_IO_INTERNAL_FILE_BYTES_H
 
-// Reading and writing fixed-size binary values in the machine's byte order or in the other one
-// (the binary gmsh `.msh` and Medit `.meshb` files announce their byte order by an integer 1).
-// Every read is bounds-checked; errors name the file and the byte offset.
+// The bytes of a file or of a buffer, as every reader and binary writer uses them: the file loader
+// (`File_bytes`: mapped or read without zero-filling), the memory hints for large arrays, the byte
+// order of the machine, byte swapping, and the one bounds-checked cursor over binary data
+// (`Byte_cursor`: fixed-size values in either byte order, errors naming the file and the byte).
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
@@ -42,6 +43,14 @@ namespace PR_star_octree {
 namespace IO {
 namespace internal {
 
+/// Whether the machine stores integers least significant byte first.
+inline bool host_is_little_endian() {
+  const std::uint16_t one = 1;
+  unsigned char c;
+  std::memcpy(&c, &one, 1);
+  return c == 1;
+}
+
 /// Reverses the bytes of a trivially copyable value.
 template <class T>
 T byte_swapped(T v) {
@@ -61,7 +70,8 @@ T load_value(const char* p, bool swap) {
   return swap ? byte_swapped(v) : v;
 }
 
-/// A read position in a binary buffer held in memory.
+/// A read position in a binary buffer held in memory: the one cursor of the binary readers (gmsh,
+/// Medit binary, legacy VTK, appended VTU data).
 class Byte_cursor {
 public:
   Byte_cursor(std::string_view data, std::string name, bool swap = false)
@@ -98,13 +108,31 @@ public:
     pos_ += sizeof(T);
     return v;
   }
-  /// An unsigned integer stored on `bytes` (4 or 8) bytes.
+  /// An unsigned integer stored on `bytes` (1, 2, 4 or 8) bytes.
   std::uint64_t get_unsigned(std::size_t bytes, const char* what) {
-    return bytes == 4 ? std::uint64_t(get<std::uint32_t>(what)) : get<std::uint64_t>(what);
+    switch (bytes) {
+    case 1:
+      return get<std::uint8_t>(what);
+    case 2:
+      return get<std::uint16_t>(what);
+    case 4:
+      return get<std::uint32_t>(what);
+    default:
+      return get<std::uint64_t>(what);
+    }
   }
-  /// A signed integer stored on `bytes` (4 or 8) bytes.
+  /// A signed integer stored on `bytes` (1, 2, 4 or 8) bytes.
   std::int64_t get_signed(std::size_t bytes, const char* what) {
-    return bytes == 4 ? std::int64_t(get<std::int32_t>(what)) : get<std::int64_t>(what);
+    switch (bytes) {
+    case 1:
+      return get<std::int8_t>(what);
+    case 2:
+      return get<std::int16_t>(what);
+    case 4:
+      return get<std::int32_t>(what);
+    default:
+      return get<std::int64_t>(what);
+    }
   }
   /// A real stored on `bytes` (4 or 8) bytes.
   double get_real(std::size_t bytes, const char* what) {
@@ -117,7 +145,18 @@ public:
   }
   void seek(std::size_t offset) { pos_ = std::min(offset, data_.size()); }
 
-private:
+  /// Reads the integer 1 by which binary gmsh and Medit files announce their byte order, and takes
+  /// the byte order from it; false (nothing read) when the next 4 bytes are not 1 in either order.
+  bool take_byte_order_mark() {
+    if (remaining() < 4) return false;
+    const std::int32_t one = load_value<std::int32_t>(here(), false);
+    if (one != 1 && byte_swapped(one) != 1) return false;
+    swap_ = one != 1;
+    pos_ += 4;
+    return true;
+  }
+
+protected: // a reader of text and binary parts (gmsh) derives from it
   std::string_view data_;
   std::string name_;
   bool swap_;
@@ -263,4 +302,4 @@ void append_binary(std::string& out, T v) {
 } // namespace PR_star_octree
 } // namespace CGAL
 
-#endif // CGAL_PR_STAR_OCTREE_IO_INTERNAL_GMSH_BYTES_H
+#endif // CGAL_PR_STAR_OCTREE_IO_INTERNAL_FILE_BYTES_H
