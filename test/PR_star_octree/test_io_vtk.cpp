@@ -835,11 +835,15 @@ int main(int argc, char** argv) {
     if (mode == "--convert" && (argc == 4 || argc == 5)) {
       Mesh m;
       IO::read_tetrahedral_mesh(argv[2], m);
+      // ascii | binary | binary-none (appended raw, uncompressed) | ascii-5.1 | binary-5.1 (legacy VTK 5.1)
       const std::string how = argc == 5 ? argv[4] : "";
-      if (how == "binary-none") // appended raw, uncompressed
+      const bool binary = how.rfind("binary", 0) == 0;
+      if (how == "binary-none")
         IO::write_tetrahedral_mesh(argv[3], m, NP::compression(IO::Compression::none).use_binary_mode(true));
+      else if (how.size() > 4 && how.substr(how.size() - 4) == "-5.1")
+        IO::write_tetrahedral_mesh(argv[3], m, NP::format_version(5.1).use_binary_mode(binary));
       else if (argc == 5)
-        IO::write_tetrahedral_mesh(argv[3], m, CGAL::parameters::use_binary_mode(how == "binary"));
+        IO::write_tetrahedral_mesh(argv[3], m, CGAL::parameters::use_binary_mode(binary));
       else
         IO::write_tetrahedral_mesh(argv[3], m);
       return 0;

@@ -102,10 +102,10 @@ void read_tetrahedral_mesh(const std::string& filename, Mesh& mesh) {
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{format_version}
 ///     \cgalParamDescription{the version of the format written: 4.1 or 2.2 for `.msh`, 1 to 4 for
-///       `.meshb`, 4.2 for `.vtk`, 1.0 for `.vtu`, 2 for `.mesh`; refused by the formats without
+///       `.meshb`, 4.2 or 5.1 for `.vtk`, 1.0 for `.vtu`, 2 for `.mesh`; refused by the formats without
 ///       versions (`.node`/`.ele`, `.off`/`.ts`)}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{4.1 for `.msh`, the smallest that fits for `.meshb` (2 under 2 GB)}
+///     \cgalParamDefault{4.1 for `.msh`, 4.2 for `.vtk`, the smallest that fits for `.meshb` (2 under 2 GB)}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Write_error for an unknown extension (the message lists the supported ones), an option

@@ -67,15 +67,15 @@ void read_vtk(const std::string& filename, Mesh& mesh) {
 
 namespace internal {
 
-/// What the legacy VTK writer accepts: ASCII (default) or binary, version 4.2.
+/// What the legacy VTK writer accepts: ASCII (default) or binary, versions 4.2 (default) and 5.1.
 inline constexpr Write_support vtk_write_support{
-    true, true, false, false, false, {"4.2", nullptr, nullptr, nullptr}, nullptr};
+    true, true, false, false, false, {"4.2", "5.1", nullptr, nullptr}, nullptr};
 
 template <class Mesh>
 void write_vtk_options(std::ostream& out, const Mesh& mesh, const std::vector<Data_array>& extra_point_data,
                        const Write_options& given, const std::string& name) {
   const Write_options o = resolve_write_options(given, vtk_write_support, "legacy VTK", name);
-  write_vtk_stream(out, mesh, extra_point_data, o.binary, name);
+  write_vtk_stream(out, mesh, extra_point_data, o.binary, version_tenths(o.version) == 51, name);
 }
 
 template <class Mesh>
@@ -93,12 +93,13 @@ void write_vtk_file(const std::string& filename, const Mesh& mesh,
 
 /// \ingroup PkgPRStarOctreeIO
 /// Writes `mesh` to a stream as a legacy VTK file, version 4.2 (`DATASET UNSTRUCTURED_GRID`,
-/// `CELLS n 5n` of tetrahedra, `CELL_TYPES` 10), readable by VTK 5 to 9, ParaView and meshio:
+/// `CELLS n 5n` of tetrahedra, `CELL_TYPES` 10), readable by VTK 5 to 9, ParaView and meshio, or
+/// version 5.1 (`CELLS n+1 4n` then `OFFSETS` and `CONNECTIVITY` arrays of `vtktypeint64`, VTK 9):
 /// points in `double`, the point-data arrays of the mesh then `extra_point_data` as `POINT_DATA`
 /// (the first one as `SCALARS`, the others in a `FIELD`, all `double`), the labels as the
 /// `CELL_DATA` `SCALARS label int`, the cell-data arrays as `double` arrays; names with blanks are
-/// `%XX`-escaped.  ASCII (shortest exact decimal form) by default, binary (big-endian, 32-bit
-/// cell indices) with `use_binary_mode(true)`.
+/// `%XX`-escaped.  ASCII (shortest exact decimal form) by default, binary (big-endian; 32-bit
+/// cell indices in 4.2, 64-bit in 5.1) with `use_binary_mode(true)`.
 /// \tparam NamedParameters a sequence of named parameters
 /// \param out the stream
 /// \param mesh the mesh
@@ -111,7 +112,7 @@ void write_vtk_file(const std::string& filename, const Mesh& mesh,
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{format_version}
-///     \cgalParamDescription{4.2 only}
+///     \cgalParamDescription{4.2 (`CELLS` records) or 5.1 (`OFFSETS` and `CONNECTIVITY`)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{4.2}
 ///   \cgalParamNEnd

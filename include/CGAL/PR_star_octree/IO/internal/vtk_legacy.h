@@ -532,13 +532,15 @@ inline std::string vtk_encode_name(const std::string& s) {
   return r;
 }
 
-/// Writes legacy VTK 4.2 (readable by VTK 5 to 9, ParaView and meshio), ascii or binary (big-endian).
+/// Writes legacy VTK 4.2 (readable by VTK 5 to 9, ParaView and meshio: `CELLS` records of 32-bit
+/// integers) or 5.1 (VTK 9: `OFFSETS` and `CONNECTIVITY` arrays of 64-bit integers), ascii or binary
+/// (big-endian).
 template <class Mesh>
 void write_vtk_stream(std::ostream& out, const Mesh& mesh, const std::vector<Data_array>& extra_point_data,
-                      bool binary, const std::string& name) {
+                      bool binary, bool version_51, const std::string& name) {
   const std::vector<const Data_array*> data = check_named_arrays_for_writing(mesh, extra_point_data, name);
   const std::size_t nv = mesh.points.size(), nt = mesh.tetrahedra.size();
-  if (binary && (nt > std::size_t(0x7fffffff) / 5 || nv > std::size_t(0x7fffffff)))
+  if (binary && !version_51 && (nt > std::size_t(0x7fffffff) / 5 || nv > std::size_t(0x7fffffff)))
     throw Write_error(name,
                       "too many tetrahedra or vertices for the 32-bit cells of a binary legacy VTK file");
   std::string buf;
@@ -565,7 +567,16 @@ void write_vtk_stream(std::ostream& out, const Mesh& mesh, const std::vector<Dat
       buf += sep;
     }
   };
-  buf += "# vtk DataFile Version 4.2\nPR-star octree tetrahedral mesh\n";
+  const auto put_int64 = [&](std::int64_t v, char sep) {
+    if (binary) {
+      put_be(&v, 8);
+    } else {
+      append_integer(buf, v);
+      buf += sep;
+    }
+  };
+  buf += version_51 ? "# vtk DataFile Version 5.1\n" : "# vtk DataFile Version 4.2\n";
+  buf += "PR-star octree tetrahedral mesh\n";
   buf += binary ? "BINARY\n" : "ASCII\n";
   buf += "DATASET UNSTRUCTURED_GRID\nPOINTS ";
   append_integer(buf, nv);
@@ -577,15 +588,33 @@ void write_vtk_stream(std::ostream& out, const Mesh& mesh, const std::vector<Dat
     flush_buffer(out, buf, name);
   }
   if (binary) buf += '\n';
-  buf += "CELLS ";
-  append_integer(buf, nt);
-  buf += ' ';
-  append_integer(buf, 5 * nt);
-  buf += '\n';
-  for (const auto& t : mesh.tetrahedra) {
-    put_int(4, ' ');
-    for (int k = 0; k < 4; ++k) put_int(static_cast<std::int32_t>(t[k]), k == 3 ? '\n' : ' ');
-    flush_buffer(out, buf, name);
+  if (version_51) {
+    buf += "CELLS ";
+    append_integer(buf, nt + 1);
+    buf += ' ';
+    append_integer(buf, 4 * nt);
+    buf += "\nOFFSETS vtktypeint64\n";
+    for (std::size_t i = 0; i <= nt; ++i) {
+      put_int64(static_cast<std::int64_t>(4 * i), i % 8 == 7 || i == nt ? '\n' : ' ');
+      flush_buffer(out, buf, name);
+    }
+    if (binary) buf += '\n';
+    buf += "CONNECTIVITY vtktypeint64\n";
+    for (const auto& t : mesh.tetrahedra) {
+      for (int k = 0; k < 4; ++k) put_int64(static_cast<std::int64_t>(t[k]), k == 3 ? '\n' : ' ');
+      flush_buffer(out, buf, name);
+    }
+  } else {
+    buf += "CELLS ";
+    append_integer(buf, nt);
+    buf += ' ';
+    append_integer(buf, 5 * nt);
+    buf += '\n';
+    for (const auto& t : mesh.tetrahedra) {
+      put_int(4, ' ');
+      for (int k = 0; k < 4; ++k) put_int(static_cast<std::int32_t>(t[k]), k == 3 ? '\n' : ' ');
+      flush_buffer(out, buf, name);
+    }
   }
   if (binary) buf += '\n';
   buf += "CELL_TYPES ";
