@@ -1,12 +1,25 @@
 #!/usr/bin/env bash
 # Installs what the PR-star octree package needs on Debian 12 (run as root, or with sudo available).
 # Skips apt entirely when everything is already there.
+#
+#   scripts/install_dependencies.sh               everything: building, and running every test
+#   scripts/install_dependencies.sh --build-only  what building needs (the library's users, prstar,
+#                                                 the tests, examples and benchmarks): what
+#                                                 scripts/setup.sh installs
 set -euo pipefail
-# doxygen: for the test `doxygen_warnings` (zero warnings in the reference manual; about 2 s per run,
-# skipped when doxygen is absent).
-packages=(g++ make cmake libcgal-dev libboost-dev libeigen3-dev libtbb-dev libgmp-dev libmpfr-dev
-          libtet1.5-dev zlib1g-dev liblz4-dev liblzma-dev doxygen
-          python3-vtk9 python3-meshio gmsh xvfb)
+# Building: the compiler, CMake, CGAL and its dependencies, Eigen (distortion), TBB (parallel
+# leaves), TetGen (prstar generate --tetgen), zlib, lz4, lzma (compressed VTU).
+build=(g++ make cmake libcgal-dev libboost-dev libeigen3-dev libtbb-dev libgmp-dev libmpfr-dev
+       libtet1.5-dev zlib1g-dev liblz4-dev liblzma-dev)
+# Testing only (each test that needs one is skipped without it): doxygen for `doxygen_warnings`
+# (zero warnings in the reference manual); VTK's and meshio's Python bindings and gmsh for the
+# format interoperability tests; xvfb to render the pictures (scripts/make_pictures.sh) off screen.
+test_only=(doxygen python3-vtk9 python3-meshio gmsh xvfb)
+case "${1:-}" in
+  --build-only) packages=("${build[@]}") ;;
+  "") packages=("${build[@]}" "${test_only[@]}") ;;
+  *) echo "install_dependencies.sh: unknown option $1 (--build-only, or nothing for everything)" >&2; exit 2 ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
