@@ -25,6 +25,7 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -161,32 +162,66 @@ public:
              " bytes announced, " + std::to_string(left) + " bytes left");
     Byte_cursor c(text_, r.name(), host_is_little_endian()); // big-endian data
     c.seek(begin);
-    if (dout) dout->reserve(dout->size() + count);
-    if (iout) iout->reserve(iout->size() + count);
+    // one loop per stored type, chosen once; the values were bounded above, so that they are read
+    // in place (`load_value`) into the resized output
+    const bool swap = c.swap();
+    const char* const data = c.here();
+    const auto convert = [&](auto stored) {
+      using T = decltype(stored);
+      const auto bad = [&](std::size_t i, const char* why) {
+        r.fail(std::string(what) + " value " + std::to_string(i) + " (byte " +
+               std::to_string(begin + i * size) + ") " + why);
+      };
+      if (dout != nullptr) {
+        const std::size_t at = dout->size();
+        dout->resize(at + count);
+        double* out = dout->data() + at;
+        for (std::size_t i = 0; i < count; ++i) {
+          const T v = load_value<T>(data + i * sizeof(T), swap);
+          if constexpr (std::is_floating_point<T>::value) {
+            if (!std::isfinite(v)) bad(i, "is not finite");
+          } else if constexpr (std::is_same<T, std::uint64_t>::value) {
+            if (v > static_cast<std::uint64_t>(std::numeric_limits<long long>::max())) bad(i, "is too large");
+          }
+          out[i] = static_cast<double>(v);
+        }
+      } else if constexpr (!std::is_floating_point<T>::value) {
+        const std::size_t at = iout->size();
+        iout->resize(at + count);
+        long long* out = iout->data() + at;
+        for (std::size_t i = 0; i < count; ++i) {
+          const T v = load_value<T>(data + i * sizeof(T), swap);
+          if constexpr (std::is_same<T, std::uint64_t>::value)
+            if (v > static_cast<std::uint64_t>(std::numeric_limits<long long>::max())) bad(i, "is too large");
+          out[i] = static_cast<long long>(v);
+        }
+      }
+      c.skip(count * sizeof(T), what);
+    };
     if (dout != nullptr || iout != nullptr) {
-      for (std::size_t i = 0; i < count; ++i) {
-        const auto bad = [&](const char* why) {
-          r.fail(std::string(what) + " value " + std::to_string(i) + " (byte " +
-                 std::to_string(begin + i * size) + ") " + why);
-        };
-        if (kind == 2) {
-          const double v = c.get_real(size, what);
-          if (!std::isfinite(v)) bad("is not finite");
-          dout->push_back(v);
-          continue;
-        }
-        long long x;
-        if (kind == 1) {
-          const std::uint64_t u = c.get_unsigned(size, what);
-          if (u > static_cast<std::uint64_t>(std::numeric_limits<long long>::max())) bad("is too large");
-          x = static_cast<long long>(u);
-        } else {
-          x = c.get_signed(size, what);
-        }
-        if (iout)
-          iout->push_back(x);
+      if (kind == 2) {
+        if (size == 4)
+          convert(float());
         else
-          dout->push_back(static_cast<double>(x));
+          convert(double());
+      } else if (kind == 1) {
+        if (size == 1)
+          convert(std::uint8_t());
+        else if (size == 2)
+          convert(std::uint16_t());
+        else if (size == 4)
+          convert(std::uint32_t());
+        else
+          convert(std::uint64_t());
+      } else {
+        if (size == 1)
+          convert(std::int8_t());
+        else if (size == 2)
+          convert(std::int16_t());
+        else if (size == 4)
+          convert(std::int32_t());
+        else
+          convert(std::int64_t());
       }
     }
     m.pos = begin + count * size;
