@@ -66,20 +66,23 @@ CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_TAG)
 /// `edge_is_constrained_map`, `get_cost`, `get_placement`, `filter` and `visitor`, e.g.
 /// `params::target_fraction(0.5).bucket_size(100).edge_is_constrained_map(m).visitor(std::ref(v))`.
 ///
+// clang-format off
 /// | parameter | used by | default |
 /// |---|---|---|
-/// | `bucket_size(std::size_t)` | `simplify()`, `check_validity()` on arrays, the `PR_star_octree_3`
-/// constructor | 50 | | `maximum_depth(std::size_t)` | the `PR_star_octree_3` constructor | 32 | |
-/// `geom_traits(gt)` (%CGAL's) | the `PR_star_octree_3` constructor, `simplify()` | `GeomTraits()` | |
-/// `check_links(bool)` | `compute_boundary()`, `Vertex_classifier` | `true` | |
-/// `with_boundary_triangles(bool)` | `compute_boundary()` | `true` | |
-/// `boundary_triangles_output(OutputIterator)` | `compute_boundary()` | none | | `target_fraction(double)`,
-/// `max_edge_length(double)`, `max_rounds(std::size_t)`, `priority(F)` | `simplify()` | 0, infinity, 1000,
-/// `Edge_length_priority` | | `progress(F)` | every leaf-streaming function | none | |
-/// `domain_curvature_map(PMap)`, `vertex_type_map(PMap)` | `compute_discrete_distortion()` | none | |
-/// `vertex_permutation(bool)`, `tetrahedron_permutation(bool)` | the `PR_star_octree_3` constructors |
-/// `true` | |
-/// `concurrency_tag(Tag)` | the `PR_star_octree_3` constructors | `CGAL::Parallel_if_available_tag()` |
+/// | `bucket_size(std::size_t)` | the `PR_star_octree_3` constructors, `simplify()`, `check_validity()` on arrays | 50 |
+/// | `maximum_depth(std::size_t)` | the `PR_star_octree_3` constructors | 32 |
+/// | `geom_traits(gt)` (%CGAL's) | the `PR_star_octree_3` constructors, `simplify()` | `GeomTraits()` |
+/// | `vertex_permutation(bool)`, `tetrahedron_permutation(bool)` | the `PR_star_octree_3` constructors | `true` |
+/// | `concurrency_tag(Tag)` | the `PR_star_octree_3` constructors (the algorithms take the tag as their `ConcurrencyTag` template argument) | `CGAL::Parallel_if_available_tag()` |
+/// | `check_links(bool)` | `compute_boundary()`, `Vertex_classifier` | `true` |
+/// | `with_boundary_triangles(bool)` | `compute_boundary()` | `true` |
+/// | `boundary_triangles_output(OutputIterator)` | `compute_boundary()` | none |
+/// | `domain_curvature_map(PMap)`, `vertex_type_map(PMap)` | `compute_discrete_distortion()` | none |
+/// | `progress(F)` | every leaf-streaming function, `simplify()` | none |
+/// | `target_fraction`, `max_edge_length`, `max_rounds`, `priority`, `quality_measure`, `quality_floor`, `feature_angle`, `max_boundary_error`, `collapse_priority`, `collapse_placement` | `simplify()` (see its documentation) | |
+/// | `vertex_is_constrained_map`, `edge_is_constrained_map`, `get_cost`, `get_placement`, `filter`, `visitor` (%CGAL's) | `simplify()` | none |
+/// | `use_binary_mode(bool)` (%CGAL's), `compression(IO::Compression)`, `format_version(double)` | the writers of `CGAL/PR_star_octree/IO.h` (what each format accepts: `IO/formats.h`) | per format |
+// clang-format on
 namespace parameters {
 using namespace CGAL::parameters;
 
