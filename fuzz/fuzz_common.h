@@ -25,7 +25,7 @@ using Octree = CGAL::PR_star_octree_3<>;
 
 inline void build_octree(const Mesh& mesh) {
   try {
-    Octree octree(CGAL::PR_star_octree::make_input(mesh), 4);
+    Octree octree(CGAL::PR_star_octree::make_input(mesh), CGAL::PR_star_octree::parameters::bucket_size(4));
     (void)octree.number_of_vertices();
   } catch (const std::invalid_argument&) {
   }
@@ -45,6 +45,6 @@ int run(const std::uint8_t* data, std::size_t size, const Read& read) {
   return 0;
 }
 
-}  // namespace prstar_fuzz
+} // namespace prstar_fuzz
 
 #endif

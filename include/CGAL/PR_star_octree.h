@@ -127,25 +127,6 @@ public:
   /// copied; `input` is not changed.
   ///
   /// \param input the mesh
-  /// \param bucket_size the bucket threshold `k_v` (at least 1), or `infinite_bucket_size`
-  /// \param max_depth the depth bound that stops splitting (duplicate or extremely close points)
-  /// \param gt the geometric traits
-  ///
-  /// \throws std::invalid_argument if a tetrahedron has a vertex index out of range or twice, or if
-  ///         the mesh does not fit in `IndexType`, or on a non-finite coordinate, or `bucket_size == 0`.
-  template <class InputMesh>
-  explicit PR_star_octree_3(const InputMesh& input, std::size_t bucket_size = default_bucket_size,
-                            std::size_t max_depth = default_max_depth, const Geom_traits& gt = Geom_traits())
-      : gt_(gt), bucket_size_(bucket_size), max_depth_(max_depth) {
-    static_assert(PR_star_octree::internal::Check_input_mesh<InputMesh, Point_3>::value, "");
-    check_bucket_size();
-    copy_input(input);
-    build_in_place<CGAL::Parallel_if_available_tag>();
-  }
-
-  /// Builds the PR-star octree of `input` (copied, as above) with named parameters.
-  ///
-  /// \param input the mesh
   /// \param np an optional sequence of named parameters among the ones listed below (see
   ///        `CGAL::PR_star_octree::parameters`)
   ///
@@ -166,27 +147,34 @@ public:
   ///     \cgalParamDefault{`GeomTraits()`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{vertex_permutation}
-  ///     \cgalParamDescription{whether the new -> original vertex numbering is kept (one index per vertex; without it the octree's numbering stands for the user's, see `has_vertex_permutation()`)}
+  ///     \cgalParamDescription{whether the new -> original vertex numbering is kept (one index per vertex;
+  ///     without it the octree's numbering stands for the user's, see `has_vertex_permutation()`)}
   ///     \cgalParamType{`bool`}
   ///     \cgalParamDefault{`true`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{tetrahedron_permutation}
-  ///     \cgalParamDescription{whether the new -> original tetrahedron numbering is kept (one index per tetrahedron; without it `original_tetrahedron()` is not available, `original_tetrahedron_vertices()` and everything per vertex still are)}
-  ///     \cgalParamType{`bool`}
-  ///     \cgalParamDefault{`true`}
+  ///     \cgalParamDescription{whether the new -> original tetrahedron numbering is kept (one index per
+  ///     tetrahedron; without it `original_tetrahedron()` is not available, `original_tetrahedron_vertices()`
+  ///     and everything per vertex still are)} \cgalParamType{`bool`} \cgalParamDefault{`true`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{concurrency_tag}
-  ///     \cgalParamDescription{`CGAL::Parallel_tag` builds with several threads (TBB), `CGAL::Sequential_tag` with one; the octree is the same.  (A constructor cannot take an explicit template argument: this is how the construction gets the `ConcurrencyTag` that the algorithms take as their first template parameter.)}
-  ///     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`}
-  ///     \cgalParamDefault{`CGAL::Parallel_if_available_tag()`}
+  ///     \cgalParamDescription{`CGAL::Parallel_tag` builds with several threads (TBB), `CGAL::Sequential_tag`
+  ///     with one; the octree is the same.  (A constructor cannot take an explicit template argument: this is
+  ///     how the construction gets the `ConcurrencyTag` that the algorithms take as their first template
+  ///     parameter.)} \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+  ///     `CGAL::Parallel_if_available_tag`} \cgalParamDefault{`CGAL::Parallel_if_available_tag()`}
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   ///
-  /// \throws std::invalid_argument as the other constructor
-  template <class InputMesh, class T, class Tag, class Base>
-  PR_star_octree_3(const InputMesh& input, const CGAL::Named_function_parameters<T, Tag, Base>& np)
+  /// \throws std::invalid_argument if a tetrahedron has a vertex index out of range or twice, or if
+  ///         the mesh does not fit in `IndexType`, or on a non-finite coordinate, or `bucket_size == 0`.
+  template <class InputMesh, class NP = parameters::Default_named_parameters>
+  explicit PR_star_octree_3(const InputMesh& input, const NP& np = parameters::default_values())
       : gt_(parameters::choose_parameter(parameters::get_parameter(np, internal_np::geom_traits),
                                          Geom_traits())) {
+    static_assert(PR_star_octree::internal::is_named_parameters<NP>::value,
+                  "PR_star_octree_3: the second argument is a chain of named parameters, e.g. "
+                  "CGAL::PR_star_octree::parameters::bucket_size(50).maximum_depth(20)");
     read_parameters(np);
     static_assert(PR_star_octree::internal::Check_input_mesh<InputMesh, Point_3>::value, "");
     check_bucket_size();

@@ -155,7 +155,7 @@ void check_adapter(const C3t3& c3t3, const std::string& name, bool convex) {
   CHECK(from_arrays.number_of_tetrahedra() == nt && from_mesh.number_of_vertices() == nv);
 
   // the adapter is a PRStarOctreeInputMesh: build the octree from it and map back
-  const CGAL::PR_star_octree_3<> octree(with_functor, 20);
+  const CGAL::PR_star_octree_3<> octree(with_functor, CGAL::PR_star_octree::parameters::bucket_size(20));
   CHECK(octree.number_of_vertices() == nv && octree.number_of_tetrahedra() == nt);
   CHECK(octree.has_scalar_field());
   bool octree_ok = octree.number_of_vertices() == nv && octree.number_of_tetrahedra() == nt;

@@ -73,7 +73,8 @@ int main() {
         format.read_stream(in, mesh, name);
         ++read_ok;
         try {
-          CGAL::PR_star_octree_3<> tree(CGAL::PR_star_octree::make_input(mesh), 4);
+          CGAL::PR_star_octree_3<> tree(CGAL::PR_star_octree::make_input(mesh),
+                                        CGAL::PR_star_octree::parameters::bucket_size(4));
           // The octree holds what was read.
           CHECK_EQUAL(tree.number_of_vertices(), mesh.number_of_vertices());
           CHECK_EQUAL(tree.number_of_tetrahedra(), mesh.number_of_tetrahedra());

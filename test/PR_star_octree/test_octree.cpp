@@ -190,7 +190,7 @@ std::map<std::vector<double>, std::set<std::size_t>> check_invariants(const Tree
 // The same mesh, vertices and tetrahedra shuffled: the same tree (boxes and leaf vertex sets).
 void check_shuffle_invariance(const Mesh& mesh, std::size_t kv, const std::string& what) {
   auto in = CGAL::PR_star_octree::make_input(mesh);
-  CGAL::PR_star_octree_3<> a(in, kv);
+  CGAL::PR_star_octree_3<> a(in, CGAL::PR_star_octree::parameters::bucket_size(kv));
   const auto shape_a = check_invariants(a, in, what);
 
   std::mt19937 rng(12345);
@@ -206,7 +206,7 @@ void check_shuffle_invariance(const Mesh& mesh, std::size_t kv, const std::strin
   for (auto& c : shuffled.tetrahedra)
     for (auto& v : c) v = inv[v];
   auto in_b = CGAL::PR_star_octree::make_input(shuffled);
-  CGAL::PR_star_octree_3<> b(in_b, kv);
+  CGAL::PR_star_octree_3<> b(in_b, CGAL::PR_star_octree::parameters::bucket_size(kv));
   auto shape_b = check_invariants(b, in_b, what + " (shuffled)");
   // Map b's original indices (shuffled) back to the mesh's numbering.
   for (auto& kvp : shape_b) {
@@ -360,7 +360,7 @@ void test_compact_leaf_lists() {
   const Mesh mesh = shuffled_lattice(30, 5); // 162,000 tetrahedra
   const auto in = CGAL::PR_star_octree::make_input(mesh);
   for (std::size_t kv : {std::size_t(8), std::size_t(60)}) {
-    const Tree tree(in, kv);
+    const Tree tree(in, CGAL::PR_star_octree::parameters::bucket_size(kv));
     check_invariants(tree, in, "lattice 30, k_v=" + std::to_string(kv));
     std::size_t multi_group_leaves = 0;
     bool same = true;
@@ -398,7 +398,8 @@ void test_hand_checked() {
   auto in = CGAL::PR_star_octree::make_input(pts, tets);
 
   // k_v = infinity: one leaf holding everything.
-  CGAL::PR_star_octree_3<> single(in, CGAL::PR_star_octree_3<>::infinite_bucket_size);
+  CGAL::PR_star_octree_3<> single(
+      in, CGAL::PR_star_octree::parameters::bucket_size(CGAL::PR_star_octree_3<>::infinite_bucket_size));
   CHECK(single.number_of_nodes() == 1 && single.number_of_leaves() == 1);
   CHECK_EQUAL(single.leaf_tetrahedra(0).size(), tets.size());
   auto s = single.statistics();
@@ -421,7 +422,7 @@ void test_hand_checked() {
 
   // Bounding cube [0,5]^3, mid 2.5: k_v = 9 splits the root once; (5,5,5) goes alone to octant 7
   // (upper faces of the root are closed), the 9 others to octant 0.
-  CGAL::PR_star_octree_3<> one(in, 9);
+  CGAL::PR_star_octree_3<> one(in, CGAL::PR_star_octree::parameters::bucket_size(9));
   CHECK_EQUAL(one.number_of_nodes(), 9);
   CHECK_EQUAL(one.number_of_leaves(), 8);
   CHECK_EQUAL(one.depth(), 1);
@@ -438,7 +439,7 @@ void test_hand_checked() {
   CHECK_EQUAL(one_np.node(8).number_of_vertices(), std::size_t(1));
 
   // k_v = 1: every vertex in its own leaf; chi = (6 * 4 + 4) / 7.
-  CGAL::PR_star_octree_3<> tiny(in, 1);
+  CGAL::PR_star_octree_3<> tiny(in, CGAL::PR_star_octree::parameters::bucket_size(1));
   check_invariants(tiny, in, "hand-checked, k_v = 1");
   CHECK_EQUAL(tiny.statistics().max_leaf_vertices, 1);
   CHECK_EQUAL(tiny.statistics().chi, 4.0);
@@ -454,7 +455,7 @@ void test_duplicates_and_depth() {
   pts.push_back(Point(0.3, 0.3, std::nextafter(0.3, 1.0))); // distinct, closer than depth 32 can separate
   std::vector<std::array<int, 4>> tets = {{100, 101, 0, 102}};
   auto in = CGAL::PR_star_octree::make_input(pts, tets);
-  CGAL::PR_star_octree_3<> tree(in, 4);
+  CGAL::PR_star_octree_3<> tree(in, CGAL::PR_star_octree::parameters::bucket_size(4));
   const auto s = tree.statistics();
   CHECK_EQUAL(s.duplicate_vertices, 99);
   CHECK(s.depth_limited_leaves + s.coincident_leaves >= 1);
@@ -470,7 +471,7 @@ void test_duplicates_and_depth() {
   for (int i = 0; i < 2000; ++i) cloud.emplace_back(u(rng), u(rng), u(rng));
   std::vector<std::array<int, 4>> none;
   auto cin = CGAL::PR_star_octree::make_input(cloud, none);
-  CGAL::PR_star_octree_3<> shallow(cin, 2, 2);
+  CGAL::PR_star_octree_3<> shallow(cin, CGAL::PR_star_octree::parameters::bucket_size(2).maximum_depth(2));
   CHECK_EQUAL(shallow.depth(), 2);
   CHECK(shallow.statistics().depth_limited_leaves > 0);
   CHECK_EQUAL(shallow.number_of_nodes(), 1 + 8 + 64);
@@ -484,7 +485,7 @@ void test_duplicates_and_depth() {
   // Empty mesh and a single point.
   std::vector<Point> empty;
   auto ein = CGAL::PR_star_octree::make_input(empty, none);
-  CGAL::PR_star_octree_3<> e(ein, 10);
+  CGAL::PR_star_octree_3<> e(ein, CGAL::PR_star_octree::parameters::bucket_size(10));
   CHECK(e.number_of_leaves() == 1 && e.number_of_vertices() == 0);
 }
 
@@ -543,7 +544,7 @@ void test_other_traits() {
   std::vector<std::vector<std::size_t>> tets;
   for (std::size_t i = 0; i + 3 < pts.size(); i += 3) tets.push_back({i, i + 1, i + 2, i + 3});
   auto in = CGAL::PR_star_octree::make_input(pts, tets, f);
-  CGAL::PR_star_octree_3<SK, std::uint64_t> tree(in, 8);
+  CGAL::PR_star_octree_3<SK, std::uint64_t> tree(in, CGAL::PR_star_octree::parameters::bucket_size(8));
   CHECK(tree.has_scalar_field());
   check_invariants(tree, in, "Simple_cartesian, 64-bit indices");
 }
@@ -555,7 +556,7 @@ void test_table1_behaviour(const Mesh& mesh, const std::string& what) {
   std::size_t prev_nodes = std::size_t(-1);
   for (std::size_t kv : {std::size_t(10), std::size_t(20), std::size_t(50), std::size_t(100),
                          std::size_t(200), CGAL::PR_star_octree_3<>::infinite_bucket_size}) {
-    CGAL::PR_star_octree_3<> tree(in, kv);
+    CGAL::PR_star_octree_3<> tree(in, CGAL::PR_star_octree::parameters::bucket_size(kv));
     const auto s = tree.statistics();
     std::cout << "  " << what << " k_v=" << (kv > 1000000 ? std::string("inf") : std::to_string(kv))
               << " |N|=" << s.nodes << " |N_leaf|=" << s.leaves << " chi=" << s.chi << "\n";

@@ -207,7 +207,7 @@ void test_exact_predicate_rejects() {
   const Point v1(0x1.e359cb0a65fe8p-1, -0x1.1f17683f86693p-1, 0x1.cc9ace08f70b8p-3);
   const std::vector<Point> pts{v1, v2, a, b, c};
   const std::vector<Tet> tets{Tet{{1, 2, 3, 4}}, Tet{{0, 1, 2, 3}}};
-  const Octree tree(P::make_input(pts, tets), Octree::infinite_bucket_size);
+  const Octree tree(P::make_input(pts, tets), P::parameters::bucket_size(Octree::infinite_bucket_size));
   const auto from = tree.vertex_from_original();
   const auto n1 = from[0], n2 = from[1];
 
@@ -240,7 +240,7 @@ void test_exact_predicate_rejects() {
 void test_link_condition_rejects_single_tetrahedron() {
   const std::vector<Point> pts{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
   const std::vector<Tet> tets{Tet{{0, 1, 2, 3}}};
-  const Octree tree(P::make_input(pts, tets), Octree::infinite_bucket_size);
+  const Octree tree(P::make_input(pts, tets), P::parameters::bucket_size(Octree::infinite_bucket_size));
   const P::Collapse_check check = P::check_half_edge_collapse(tree, Octree::Index(0), Octree::Index(1));
   CHECK(check.edge_exists);
   CHECK(check.boundary);
@@ -294,7 +294,7 @@ void test_link_condition_rejects_ring() {
   CHECK(valid.valid);
   CHECK_EQUAL(valid.euler_characteristic, 0LL);
 
-  const Octree tree(P::make_input(pts, tets), Octree::infinite_bucket_size);
+  const Octree tree(P::make_input(pts, tets), P::parameters::bucket_size(Octree::infinite_bucket_size));
   const auto from = tree.vertex_from_original();
   // The ring edges between two sections at the same corner, e.g. (0, 3): the corner of the third
   // section (6) is joined to both ends, but (0, 3, 6) is not a triangle.  The link condition

@@ -475,7 +475,7 @@ auto simplify(const InputMesh& input, const NP& np = parameters::default_values(
 
   // The first round's octree, on the input: it validates and orients it.
   std::optional<Octree> tree;
-  tree.emplace(input, options.settings.bucket_size, Octree::default_max_depth, options.gt);
+  tree.emplace(input, parameters::bucket_size(options.settings.bucket_size).geom_traits(options.gt));
   std::vector<int> labels; // in the input's numbering
   if (tree->has_tetrahedron_labels()) {
     labels.resize(tree->number_of_tetrahedra());

@@ -6,6 +6,7 @@
 #ifndef CGAL_PR_STAR_OCTREE_INTERNAL_CONCEPT_CHECKS_H
 #define CGAL_PR_STAR_OCTREE_INTERNAL_CONCEPT_CHECKS_H
 
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/number_utils.h>
 
 #include <array>
@@ -16,6 +17,13 @@
 namespace CGAL {
 namespace PR_star_octree {
 namespace internal {
+
+// Whether `NP` is a chain of named parameters (CGAL's or the package's, which derive from CGAL's).
+template <class T, class Tag, class Base>
+std::true_type named_parameters_test(const CGAL::Named_function_parameters<T, Tag, Base>*);
+std::false_type named_parameters_test(...);
+template <class NP>
+struct is_named_parameters : decltype(named_parameters_test(static_cast<const NP*>(nullptr))) {};
 
 // Detection idiom (C++17): each trait is true when the expression or nested type exists.
 template <class...>

@@ -92,8 +92,8 @@ public:
       }
       if (stats.rounds > 0) { // the octree of the current mesh
         tree.reset();
-        tree.emplace(make_input(out.points, out.tetrahedra), settings_.bucket_size, Octree::default_max_depth,
-                     gt_);
+        tree.emplace(make_input(out.points, out.tetrahedra),
+                     parameters::bucket_size(settings_.bucket_size).geom_traits(gt_));
       }
       ++stats.rounds;
       const std::size_t before = removed_;
