@@ -584,7 +584,10 @@ public:
   template <class Tetrahedron, class Shared>
   void build(const Tetrahedron* T, const Shared& shared, std::pair<Index, Index> owned, Index vb,
              std::size_t nv, bool check_links, bool keep_tetrahedra = false, bool classify_links = true) {
-    gather(T, shared, owned, vb, nv, keep_tetrahedra);
+    if (keep_tetrahedra) // (a constant in the loop over the tetrahedra)
+      gather<true>(T, shared, owned, vb, nv);
+    else
+      gather<false>(T, shared, owned, vb, nv);
     kinds_.resize(classify_links ? nv : 0);
     if (classify_links)
       for (std::size_t i = 0; i < nv; ++i) kinds_[i] = classify(i, check_links);
@@ -614,9 +617,9 @@ private:
   // Local ids and the CSR of the link triangles of each leaf vertex: one pass over the
   // tetrahedra appends the link triangle of each corner in the leaf (branch-free, as VT), then a
   // counting sort groups them by vertex.
-  template <class Tetrahedron, class Shared>
+  template <bool keep_tetrahedra, class Tetrahedron, class Shared>
   void gather(const Tetrahedron* T, const Shared& shared, std::pair<Index, Index> owned, Index vb,
-              std::size_t nv, bool keep_tetrahedra) {
+              std::size_t nv) {
     const std::size_t n_tets =
         static_cast<std::size_t>(std::distance(shared.begin(), shared.end())) + (owned.second - owned.first);
     others_.reset(3 * n_tets);
@@ -642,7 +645,7 @@ private:
         corners[m] = Corner{l[k], {{l[link_face[k][0]], l[link_face[k][1]], l[link_face[k][2]]}}};
         m += (l[k] < base);
       }
-      if (keep_tetrahedra) tetrahedra_[n++] = l;
+      if constexpr (keep_tetrahedra) tetrahedra_[n++] = l;
     };
     for (Index t : shared) add(t);
     for (Index t = owned.first; t < owned.second; ++t) add(t);
