@@ -217,9 +217,11 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
     std::vector<std::array<double, 3>> points;
   };
   Vertex_type_counts counts;
-  // The leaves write their own slots of `result` (octree numbering), copied to the user's map
-  // afterwards, in vertex order: the map is written from the calling thread only.
-  std::vector<Vertex_curvature> result(tree.number_of_vertices());
+  // In parallel, the leaves write their own slots of `result` (octree numbering), copied to the
+  // user's map afterwards, in vertex order: the map is written from the calling thread only.
+  // Sequentially, each leaf writes to the map directly (no per-vertex buffer).
+  constexpr bool parallel = Leaf_executor<ConcurrencyTag>::is_parallel();
+  std::vector<Vertex_curvature> result(parallel ? tree.number_of_vertices() : 0);
   // A field in the user's numbering is copied into the octree's numbering first, one read per
   // vertex (the leaves would read it at scattered places, several times per vertex).
   constexpr bool in_place = std::is_same<FieldMap, Octree_field_map<Octree>>::value;
@@ -271,7 +273,13 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
         }
         for (std::size_t i = 0; i < nv; ++i) {
           const I v = static_cast<I>(vb + i);
-          result[v] = internal::finish_curvature(s3[i], s4[i], local.vertex_type(v));
+          const Vertex_curvature c = internal::finish_curvature(s3[i], s4[i], local.vertex_type(v));
+          if constexpr (parallel)
+            result[v] = c;
+          else {
+            counts.add(c.type);
+            put(curvature_map, static_cast<std::size_t>(tree.original_vertex(v)), c);
+          }
         }
       },
       internal::Progress_reporter<NP>(np));
