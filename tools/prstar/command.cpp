@@ -504,17 +504,4 @@ void write_mesh_file(const std::string& out, const Mesh& mesh) {
       out, [&](const std::string& tmp) { CGAL::PR_star_octree::IO::write_tetrahedral_mesh(tmp, mesh); });
 }
 
-void write_mesh_with_point_data(const std::string& out, Mesh& mesh,
-                                const std::vector<CGAL::PR_star_octree::Data_array>& arrays) {
-  const std::size_t own = mesh.point_data.size();
-  mesh.point_data.insert(mesh.point_data.end(), arrays.begin(), arrays.end());
-  try {
-    write_mesh_file(out, mesh);
-  } catch (...) {
-    mesh.point_data.resize(own);
-    throw;
-  }
-  mesh.point_data.resize(own);
-}
-
 } // namespace prstar

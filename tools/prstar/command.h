@@ -180,10 +180,6 @@ Mesh read_mesh(const std::string& file, Progress_bar& progress);
 void write_through_temporary(const std::string& out, const std::function<void(const std::string&)>& write);
 /// `write_through_temporary` with the library's writer chosen by the extension of `out`.
 void write_mesh_file(const std::string& out, const Mesh& mesh);
-/// `write_mesh_file` of `mesh` with extra point arrays (in the user's order) after its own; the
-/// format must keep point data (see `point_data_outputs`).  `mesh` is given back as it was.
-void write_mesh_with_point_data(const std::string& out, Mesh& mesh,
-                                const std::vector<CGAL::PR_star_octree::Data_array>& arrays);
 /// The output extensions that keep every point array (from the library's format table): VTK XML and
 /// legacy (named arrays), TetGen (node attributes, unnamed); comma-separated, as `Command::output` takes
 /// them.
