@@ -11,6 +11,7 @@
 /// seen as a hypersurface of R^4 through the tetrahedral mesh lifted by f.
 
 #include <CGAL/PR_star_octree/boundary.h>
+#include <CGAL/PR_star_octree/internal/fixed_point_sum.h>
 #include <CGAL/PR_star_octree/internal/solid_angle.h>
 #include <CGAL/PR_star_octree/parameters.h>
 
@@ -96,6 +97,9 @@ Octree_field_map<Octree> coordinate_field_map(const Octree& tree, int axis) {
 
 namespace internal {
 
+// The sums of the solid angles at a vertex: exact, whatever the order of the star (< 2^26).
+using Angle_sum = Fixed_point_sum<100>;
+
 inline Vertex_curvature finish_curvature(double s3, double s4, Vertex_type type) {
   const double pi = 3.14159265358979323846;
   Vertex_curvature c;
@@ -155,12 +159,15 @@ double field_value(const Octree&, const Octree_field_map<Octree>& field, typenam
   return field.at_octree_vertex(v);
 }
 
-// The curvature of vertex `v` of the leaf of `local`.
+// The curvature of vertex `v` of the leaf of `local`.  The result does not depend on how the
+// vertices and the tetrahedra are numbered (a distributed run numbers them otherwise and must give
+// the same bits): each corner's angles are computed with the other three vertices in a canonical
+// order, and added exactly (`Fixed_point_sum`), then rounded once.
 template <class Octree, class FieldMap>
 Vertex_curvature vertex_curvature(const Leaf_topology<Octree>& local, const FieldMap& field,
                                   Vertex_classifier<Octree>& classifier, typename Octree::Index v) {
   const Octree& tree = local.octree();
-  double s3 = 0, s4 = 0;
+  Angle_sum s3, s4;
   for (auto t : local.vertex_tetrahedra(v)) {
     const auto& c = tree.tetrahedron(t);
     std::array<std::array<double, 3>, 4> p;
@@ -171,11 +178,11 @@ Vertex_curvature vertex_curvature(const Leaf_topology<Octree>& local, const Fiel
       f[i] = field_value(tree, field, c[i]);
       if (c[i] == v) k = i;
     }
-    const auto a = corner_solid_angles(p, f, k);
-    s3 += a.first;
-    s4 += a.second;
+    const auto a = canonical_corner_solid_angles(p, f, k);
+    s3.add(a.first);
+    s4.add(a.second);
   }
-  return finish_curvature(s3, s4, classifier.classify(local, v));
+  return finish_curvature(s3.value(), s4.value(), classifier.classify(local, v));
 }
 
 } // namespace internal
@@ -213,7 +220,8 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
                                      const NP& np = parameters::default_values()) {
   using Octree = PR_star_octree_3<GT, I>;
   struct State {
-    std::vector<double> s3, s4, fields;
+    std::vector<internal::Angle_sum> s3, s4;
+    std::vector<double> fields;
     std::vector<std::array<double, 3>> points;
   };
   Vertex_type_counts counts;
@@ -249,12 +257,11 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
           state.points[j] = tree.coordinates(tree.point(v));
           state.fields[j] = value(v);
         }
-        // Each tetrahedron of the leaf once, for all its corners in the leaf.  The leaf's list is
-        // in increasing order, as every star, so each vertex sums its corners in the same order as
-        // `vertex_curvature()`.
-        std::vector<double>&s3 = state.s3, &s4 = state.s4;
-        s3.assign(nv, 0.);
-        s4.assign(nv, 0.);
+        // Each tetrahedron of the leaf once, for all its corners in the leaf, added exactly as in
+        // `vertex_curvature()` (the same bits).
+        std::vector<internal::Angle_sum>&s3 = state.s3, &s4 = state.s4;
+        s3.assign(nv, internal::Angle_sum());
+        s4.assign(nv, internal::Angle_sum());
         std::array<std::array<double, 3>, 4> p;
         std::array<double, 4> f;
         const std::size_t n_tets = local.tetrahedra().size();
@@ -266,14 +273,15 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
           }
           for (int k = 0; k < 4; ++k) {
             if (l[k] >= nv) continue;
-            const auto a = internal::corner_solid_angles(p, f, k);
-            s3[l[k]] += a.first;
-            s4[l[k]] += a.second;
+            const auto a = internal::canonical_corner_solid_angles(p, f, k);
+            s3[l[k]].add(a.first);
+            s4[l[k]].add(a.second);
           }
         }
         for (std::size_t i = 0; i < nv; ++i) {
           const I v = static_cast<I>(vb + i);
-          const Vertex_curvature c = internal::finish_curvature(s3[i], s4[i], local.vertex_type(v));
+          const Vertex_curvature c =
+              internal::finish_curvature(s3[i].value(), s4[i].value(), local.vertex_type(v));
           if constexpr (parallel)
             result[v] = c;
           else {

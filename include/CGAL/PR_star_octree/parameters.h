@@ -40,7 +40,8 @@ namespace PR_star_octree {
   X(tetrahedron_permutation)                                                                                 \
   X(concurrency_tag)                                                                                         \
   X(compression)                                                                                             \
-  X(format_version)
+  X(format_version)                                                                                          \
+  X(communicator)
 
 namespace internal_np {
 // The tags of the package's own named parameters (CGAL's tags live in `CGAL::internal_np`).
@@ -82,6 +83,7 @@ CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_TAG)
 /// | `target_fraction`, `max_edge_length`, `max_rounds`, `priority`, `quality_measure`, `quality_floor`, `feature_angle`, `max_boundary_error`, `collapse_priority`, `collapse_placement` | `simplify()` (see its documentation) | |
 /// | `vertex_is_constrained_map`, `edge_is_constrained_map`, `get_cost`, `get_placement`, `filter`, `visitor` (%CGAL's) | `simplify()` | none |
 /// | `use_binary_mode(bool)` (%CGAL's), `compression(IO::Compression)`, `format_version(double)` | the writers of `CGAL/PR_star_octree/IO.h` (what each format accepts: `IO/formats.h`) | per format |
+/// | `communicator(MPI_Comm)` | `Distributed_octree_3`, `IO::read_mesh_part()` (MPI) | `MPI_COMM_WORLD` |
 // clang-format on
 namespace parameters {
 using namespace CGAL::parameters;

@@ -1,0 +1,57 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_DISTRIBUTED_MESH_PART_H
+#define CGAL_PR_STAR_OCTREE_DISTRIBUTED_MESH_PART_H
+
+/// \file Distributed_mesh_part.h
+/// The part of a tetrahedral mesh one MPI rank holds before the distributed octree is built.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace PR_star_octree {
+
+/// \ingroup PkgPRStarOctreeDistributed
+/// The part of a mesh one rank starts from: a contiguous block of the vertices (global ids
+/// `first_vertex`, `first_vertex + 1`, ...) and any tetrahedra (by global vertex ids).  Over the ranks,
+/// the vertex blocks follow each other in rank order and cover the mesh; every tetrahedron is in
+/// exactly one part.  `IO::read_mesh_part()` makes them from a file; a program that has its mesh
+/// already spread over its ranks fills them itself.  Plain data: no MPI in this header.
+struct Distributed_mesh_part {
+  /// the global id of the first vertex of this part (the sum of the sizes of the parts of the
+  /// ranks before)
+  std::uint64_t first_vertex = 0;
+  /// x, y, z of each vertex of the block
+  std::vector<double> coordinates;
+  /// the names of the point arrays (the first is the scalar field of the octree), the same on
+  /// every rank
+  std::vector<std::string> point_array_names;
+  /// one vector per name, one value per vertex of the block
+  std::vector<std::vector<double>> point_arrays;
+  /// the tetrahedra of the part, by global vertex ids
+  std::vector<std::array<std::uint64_t, 4>> tetrahedra;
+  /// the global id of each tetrahedron (its cell index in the input file), for the output
+  std::vector<std::uint64_t> tetrahedron_ids;
+  /// empty, or one label per tetrahedron (the same choice on every rank)
+  std::vector<int> tetrahedron_labels;
+  /// the name of the label array for the output (VTK cell array name)
+  std::string label_name = "label";
+  /// cells of other types met and not kept by this rank's reader, by type name
+  std::map<std::string, std::size_t> skipped_cells;
+
+  /// the number of vertices of the block
+  std::size_t number_of_vertices() const { return coordinates.size() / 3; }
+};
+
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_DISTRIBUTED_MESH_PART_H

@@ -1,0 +1,623 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_DISTRIBUTED_OCTREE_3_H
+#define CGAL_PR_STAR_OCTREE_DISTRIBUTED_OCTREE_3_H
+
+/// \file Distributed_octree_3.h
+/// The PR-star octree over MPI: the ranks own contiguous ranges of the vertices in the octree's
+/// depth-first (Morton) order, each with the stars of its vertices (ghost stars), and each builds
+/// an ordinary `PR_star_octree_3` on its part.  Requires MPI.
+
+#include <CGAL/PR_star_octree.h>
+#include <CGAL/PR_star_octree/Distributed_mesh_part.h>
+#include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
+#include <CGAL/PR_star_octree/internal/mpi_communication.h>
+#include <CGAL/PR_star_octree/parameters.h>
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace PR_star_octree {
+
+namespace internal {
+
+// 21 bits of each coordinate interleaved (x lowest): the depth-first order of an octree whose
+// children are numbered like `PR_star_octree_3`'s octants (bit a set above the midpoint on axis a).
+inline std::uint64_t morton_key(const double* p, const double* lo, double inverse_extent) {
+  constexpr std::uint64_t cells = std::uint64_t(1) << 21;
+  std::uint64_t key = 0;
+  for (int a = 0; a < 3; ++a) {
+    double t = (p[a] - lo[a]) * inverse_extent * double(cells);
+    std::uint64_t q = t <= 0 ? 0 : (t >= double(cells - 1) ? cells - 1 : static_cast<std::uint64_t>(t));
+    // spread the 21 bits of q to every third bit
+    q &= 0x1fffff;
+    q = (q | (q << 32)) & 0x1f00000000ffffULL;
+    q = (q | (q << 16)) & 0x1f0000ff0000ffULL;
+    q = (q | (q << 8)) & 0x100f00f00f00f00fULL;
+    q = (q | (q << 4)) & 0x10c30c30c30c30c3ULL;
+    q = (q | (q << 2)) & 0x1249249249249249ULL;
+    key |= q << a;
+  }
+  return key;
+}
+
+struct Morton_record {
+  std::uint64_t key, id;
+  bool operator<(const Morton_record& o) const { return key != o.key ? key < o.key : id < o.id; }
+};
+
+struct Weighted_sample {
+  Morton_record record;
+  double weight;
+};
+
+// A tetrahedron sent to the owners of its vertices.
+struct Tetrahedron_record {
+  std::array<std::uint64_t, 4> vertices;
+  std::uint64_t id;
+  std::array<std::int32_t, 4> owners;
+  std::int32_t label;
+  std::int32_t unused;
+};
+
+struct Id_owner {
+  std::uint64_t id;
+  std::int32_t owner;
+  std::int32_t unused;
+};
+
+} // namespace internal
+
+/// \ingroup PkgPRStarOctreeDistributed
+/// The PR-star octree of a mesh spread over the ranks of an MPI communicator.
+///
+/// The construction is collective.  The vertices are ordered by the Morton code of their position
+/// in the bounding box of the whole mesh (the depth-first order of an octree of depth 21) and split
+/// into contiguous ranges, one per rank, balanced by work (each vertex weighs one plus the size of
+/// its star), with a parallel sample sort: no rank ever holds the whole mesh.  A rank *owns* the
+/// vertices of its range; a tetrahedron lives on every rank that owns one of its vertices (the
+/// PR-star rule lifted to ranks: the stars of the owned vertices are complete); the other vertices
+/// of those tetrahedra are the rank's *ghost* vertices.  Each rank then builds an ordinary
+/// `PR_star_octree_3` (`local_octree()`) on its owned and ghost vertices and its tetrahedra.
+///
+/// Numberings: global ids are 64-bit (the input's numbering of the vertices and of the cells);
+/// local indices are 32-bit.  The *part index* of a local vertex is its position in the rank's
+/// vertex list: the owned vertices first, in Morton order, then the ghost vertices, grouped by owner
+/// rank; it is the "user's numbering" of the local octree (`local_octree().original_vertex(v)`).
+/// A simplex is counted by the rank that owns its vertex of smallest global id (every tetrahedron
+/// incident in it is then on that rank).
+///
+/// \tparam GeomTraits as for `PR_star_octree_3`
+template <class GeomTraits = CGAL::Exact_predicates_inexact_constructions_kernel>
+class Distributed_octree_3 {
+public:
+  using Geom_traits = GeomTraits;
+  using Index = std::uint32_t;
+  using Global_id = std::uint64_t;
+  using Octree = PR_star_octree_3<GeomTraits, Index>;
+  using Point_3 = typename Octree::Point_3;
+
+  /// Builds the distributed octree from this rank's part of the mesh (collective; `part` is
+  /// consumed).
+  ///
+  /// \param part this rank's part (see `Distributed_mesh_part`)
+  /// \param np an optional sequence of named parameters among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{communicator}
+  ///     \cgalParamDescription{the ranks that hold the mesh}
+  ///     \cgalParamType{`MPI_Comm`}
+  ///     \cgalParamDefault{`MPI_COMM_WORLD`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{bucket_size}
+  ///     \cgalParamDescription{k_v of the local octrees}
+  ///     \cgalParamType{`std::size_t`}
+  ///     \cgalParamDefault{`PR_star_octree_3::default_bucket_size`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{maximum_depth}
+  ///     \cgalParamDescription{the depth bound of the local octrees}
+  ///     \cgalParamType{`std::size_t`}
+  ///     \cgalParamDefault{as `PR_star_octree_3`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{concurrency_tag}
+  ///     \cgalParamDescription{how each rank builds its local octree}
+  ///     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`}
+  ///     \cgalParamDefault{`CGAL::Parallel_if_available_tag()`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
+  /// \throws std::runtime_error on every rank, with the same message, if the parts are not a mesh
+  ///         (a vertex id out of range, vertex blocks that do not follow each other) or the local
+  ///         octree of a rank cannot be built
+  template <class NP = parameters::Default_named_parameters>
+  explicit Distributed_octree_3(Distributed_mesh_part&& part, const NP& np = parameters::default_values())
+      : comm_(parameters::choose_parameter(parameters::get_parameter(np, internal_np::communicator),
+                                           MPI_COMM_WORLD)) {
+    rank_ = internal::mpi_rank(comm_);
+    size_ = internal::mpi_size(comm_);
+    auto clock = std::chrono::steady_clock::now();
+    auto lap = [&clock](double& s) {
+      const auto now = std::chrono::steady_clock::now();
+      s = std::chrono::duration<double>(now - clock).count();
+      clock = now;
+    };
+    partition(part);
+    lap(partition_seconds_);
+    build_local(part, np);
+    lap(build_seconds_);
+  }
+
+  /// \name The ranks
+  /// @{
+  MPI_Comm communicator() const { return comm_; }
+  int rank() const { return rank_; }
+  int number_of_ranks() const { return size_; }
+  /// @}
+
+  /// \name The whole mesh
+  /// @{
+  /// the number of vertices of the whole mesh
+  Global_id number_of_vertices() const { return global_vertices_; }
+  /// the number of tetrahedra of the whole mesh
+  Global_id number_of_tetrahedra() const { return global_tetrahedra_; }
+  /// the names of the point arrays of the input (the first is the scalar field)
+  const std::vector<std::string>& point_array_names() const { return array_names_; }
+  /// whether the tetrahedra have labels
+  bool has_tetrahedron_labels() const { return local_->has_tetrahedron_labels(); }
+  /// the name of the label array of the input
+  const std::string& label_name() const { return label_name_; }
+  /// @}
+
+  /// \name This rank's part
+  /// @{
+  /// the octree of this rank's owned and ghost vertices and the stars of the owned ones
+  const Octree& local_octree() const { return *local_; }
+  /// owned plus ghost vertices
+  std::size_t number_of_local_vertices() const { return gids_.size(); }
+  /// the vertices this rank owns: part indices `0 ... number_of_owned_vertices() - 1`
+  std::size_t number_of_owned_vertices() const { return owned_; }
+  std::size_t number_of_ghost_vertices() const { return gids_.size() - owned_; }
+  /// the global id of the vertex of part index `i`
+  Global_id global_vertex_id(std::size_t i) const { return gids_[i]; }
+  /// the rank that owns the vertex of part index `i`
+  int vertex_owner(std::size_t i) const { return i < owned_ ? rank_ : ghost_owner_[i - owned_]; }
+  /// the values of point array `a` at the local vertices (by part index; ghosts included)
+  const std::vector<double>& point_array(std::size_t a) const { return arrays_[a]; }
+
+  /// whether this rank owns vertex `v` of the local octree's numbering
+  bool owns_vertex(Index v) const { return local_->original_vertex(v) < owned_; }
+  /// the global id of vertex `v` of the local octree's numbering
+  Global_id global_id(Index v) const { return gids_[local_->original_vertex(v)]; }
+  /// the global id of tetrahedron `t` of the local octree's numbering
+  Global_id global_tetrahedron_id(Index t) const { return tet_gids_[local_->original_tetrahedron(t)]; }
+  /// the local vertex (local octree numbering) of smallest global id among `vertices`
+  template <class Range>
+  Index smallest(const Range& vertices) const {
+    Index best = *vertices.begin();
+    Global_id g = global_id(best);
+    for (Index v : vertices) {
+      const Global_id h = global_id(v);
+      if (h < g) {
+        g = h;
+        best = v;
+      }
+    }
+    return best;
+  }
+  /// whether this rank counts the simplex of local vertices `vertices` (local octree numbering):
+  /// it owns the vertex of smallest global id
+  template <class Range>
+  bool counts_simplex(const Range& vertices) const {
+    return owns_vertex(smallest(vertices));
+  }
+  /// whether this rank counts tetrahedron `t` (local octree numbering)
+  bool counts_tetrahedron(Index t) const { return counts_simplex(local_->tetrahedron(t)); }
+  /// the rank that owns the vertex of smallest global id of tetrahedron `t`
+  int tetrahedron_owner(Index t) const {
+    return vertex_owner(local_->original_vertex(smallest(local_->tetrahedron(t))));
+  }
+  /// the tetrahedra of this rank counted by another rank
+  std::size_t number_of_ghost_tetrahedra() const { return ghost_tetrahedra_; }
+  /// @}
+
+  /// \name Ghost values
+  /// @{
+  /// Sets the values of `values` (one per local vertex, by part index) at the ghost vertices to
+  /// the values their owners have (collective).
+  template <class T>
+  void update_ghosts(std::vector<T>& values) const {
+    std::vector<std::vector<T>> send(size_);
+    for (int r = 0; r < size_; ++r) {
+      send[r].reserve(halo_send_[r].size());
+      for (Index i : halo_send_[r]) send[r].push_back(values[i]);
+    }
+    bytes_ += count_bytes(send);
+    const std::vector<T> received = internal::all_to_all(comm_, send);
+    std::copy(received.begin(), received.end(), values.begin() + std::ptrdiff_t(owned_));
+  }
+  /// @}
+
+  /// \name Cost of the distribution (this rank)
+  /// @{
+  double partition_seconds() const { return partition_seconds_; }
+  double build_seconds() const { return build_seconds_; }
+  /// bytes this rank has sent so far (construction and ghost updates)
+  std::size_t bytes_sent() const { return bytes_; }
+  /// @}
+
+private:
+  template <class T>
+  static std::size_t count_bytes(const std::vector<std::vector<T>>& send) {
+    std::size_t n = 0;
+    for (const auto& s : send) n += s.size() * sizeof(T);
+    return n;
+  }
+  template <class T>
+  std::vector<T> exchange(std::vector<std::vector<T>>& send, std::vector<std::size_t>* counts = nullptr) {
+    bytes_ += count_bytes(send);
+    return internal::all_to_all(comm_, send, counts);
+  }
+
+  // The rank whose input block holds global vertex id g.
+  int block_of(Global_id g) const {
+    return int(std::upper_bound(block_start_.begin(), block_start_.end(), g) - block_start_.begin()) - 1;
+  }
+
+  void partition(Distributed_mesh_part& part) {
+    using namespace internal;
+    const std::size_t nv = part.number_of_vertices();
+    // The input blocks and the global sizes.
+    std::string error;
+    if (part.coordinates.size() % 3 != 0) error = "the coordinates are not triples";
+    for (const auto& a : part.point_arrays)
+      if (error.empty() && a.size() != nv) error = "a point array does not have one value per vertex";
+    if (error.empty() && !part.tetrahedron_labels.empty() &&
+        part.tetrahedron_labels.size() != part.tetrahedra.size())
+      error = "the labels are not one per tetrahedron";
+    if (error.empty() && part.tetrahedron_ids.size() != part.tetrahedra.size())
+      error = "the tetrahedron ids are not one per tetrahedron";
+    const std::vector<Global_id> firsts = all_gather<Global_id>(comm_, part.first_vertex);
+    const std::vector<Global_id> counts = all_gather<Global_id>(comm_, Global_id(nv));
+    block_start_.assign(firsts.begin(), firsts.end());
+    global_vertices_ = 0;
+    for (int r = 0; r < size_; ++r) {
+      if (error.empty() && firsts[r] != global_vertices_)
+        error = "the vertex blocks of the ranks do not follow each other (rank " + std::to_string(r) +
+                " starts at " + std::to_string(firsts[r]) + ", expected " + std::to_string(global_vertices_) +
+                ")";
+      global_vertices_ += counts[r];
+    }
+    block_start_.push_back(global_vertices_);
+    for (std::size_t t = 0; t < part.tetrahedra.size() && error.empty(); ++t)
+      for (Global_id g : part.tetrahedra[t])
+        if (g >= global_vertices_) {
+          error = "tetrahedron " + std::to_string(part.tetrahedron_ids[t]) + " has vertex " +
+                  std::to_string(g) + ", but the mesh has " + std::to_string(global_vertices_) + " vertices";
+          break;
+        }
+    agree_on_errors(comm_, error);
+    global_tetrahedra_ = sum_in_rank_order<Global_id>(comm_, part.tetrahedra.size());
+    array_names_ = part.point_array_names;
+    label_name_ = part.label_name;
+    has_labels_ = !part.tetrahedron_labels.empty();
+    int any_labels = has_labels_ ? 1 : 0, all_labels = 0;
+    MPI_Allreduce(&any_labels, &all_labels, 1, MPI_INT, MPI_MAX, comm_);
+    has_labels_ = all_labels != 0;
+
+    // The bounding box of the whole mesh.
+    double lo[3], hi[3];
+    {
+      double box[6] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                       std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                       std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+      for (std::size_t i = 0; i < nv; ++i)
+        for (int a = 0; a < 3; ++a) {
+          box[a] = (std::min)(box[a], part.coordinates[3 * i + a]);
+          box[3 + a] = (std::min)(box[3 + a], -part.coordinates[3 * i + a]);
+        }
+      double global_box[6];
+      MPI_Allreduce(box, global_box, 6, MPI_DOUBLE, MPI_MIN, comm_);
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = global_box[a];
+        hi[a] = -global_box[3 + a];
+      }
+    }
+    double extent = 0;
+    for (int a = 0; a < 3; ++a)
+      if (hi[a] > lo[a]) extent = (std::max)(extent, hi[a] - lo[a]);
+    const double inverse_extent = extent > 0 ? 1. / extent : 0.;
+
+    // The star sizes of the block's vertices: each corner of each tetrahedron to its block.
+    std::vector<std::uint32_t> star(nv, 0);
+    {
+      std::vector<std::vector<Global_id>> send(size_);
+      for (const auto& c : part.tetrahedra)
+        for (Global_id g : c) send[block_of(g)].push_back(g);
+      for (Global_id g : exchange(send)) ++star[g - part.first_vertex];
+    }
+
+    // Parallel sample sort by (Morton key, id), weighted by 1 + star size.
+    std::vector<Morton_record> records(nv);
+    for (std::size_t i = 0; i < nv; ++i)
+      records[i] = {morton_key(&part.coordinates[3 * i], lo, inverse_extent), part.first_vertex + i};
+    std::vector<std::size_t> order(nv);
+    for (std::size_t i = 0; i < nv; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return records[a] < records[b]; });
+    std::vector<Morton_record> splitters;
+    {
+      double local_weight = 0;
+      for (std::size_t i = 0; i < nv; ++i) local_weight += 1. + double(star[i]);
+      const std::size_t samples = (std::min)(nv, std::size_t(64) * std::size_t(size_));
+      std::vector<Weighted_sample> mine;
+      double w = 0, next = samples ? local_weight / double(samples) / 2 : 0;
+      for (std::size_t k = 0; k < nv && mine.size() < samples; ++k) {
+        const std::size_t i = order[k];
+        w += 1. + double(star[i]);
+        if (w >= next) {
+          mine.push_back({records[i], local_weight / double(samples)});
+          next += local_weight / double(samples);
+        }
+      }
+      std::vector<Weighted_sample> all = all_gather_vectors(comm_, mine);
+      std::sort(all.begin(), all.end(),
+                [](const Weighted_sample& a, const Weighted_sample& b) { return a.record < b.record; });
+      double total = 0;
+      for (const auto& s : all) total += s.weight;
+      double cumulative = 0;
+      int k = 1;
+      for (const auto& s : all) {
+        cumulative += s.weight;
+        while (k < size_ && cumulative >= total * double(k) / double(size_)) {
+          splitters.push_back(s.record);
+          ++k;
+        }
+      }
+      while (int(splitters.size()) < size_ - 1)
+        splitters.push_back(
+            {(std::numeric_limits<std::uint64_t>::max)(), (std::numeric_limits<std::uint64_t>::max)()});
+    }
+    // Send each vertex to its range: the record, then x, y, z and the arrays.
+    const std::size_t na = part.point_arrays.size(), values_per_vertex = 3 + na;
+    std::vector<Morton_record> mine;
+    std::vector<double> values;
+    {
+      std::vector<std::vector<Morton_record>> send(size_);
+      std::vector<std::vector<double>> send_values(size_);
+      for (std::size_t k = 0; k < nv; ++k) {
+        const std::size_t i = order[k];
+        const int r =
+            int(std::upper_bound(splitters.begin(), splitters.end(), records[i]) - splitters.begin());
+        send[r].push_back(records[i]);
+        for (int a = 0; a < 3; ++a) send_values[r].push_back(part.coordinates[3 * i + a]);
+        for (std::size_t a = 0; a < na; ++a) send_values[r].push_back(part.point_arrays[a][i]);
+      }
+      std::vector<Morton_record>().swap(records);
+      std::vector<std::size_t>().swap(order);
+      std::vector<double>().swap(part.coordinates);
+      std::vector<std::vector<double>>().swap(part.point_arrays);
+      mine = exchange(send);
+      values = exchange(send_values);
+    }
+    // Each source sent its records sorted: sort the union (a merge in effect).
+    owned_ = mine.size();
+    {
+      std::vector<std::size_t> o(owned_);
+      for (std::size_t i = 0; i < owned_; ++i) o[i] = i;
+      std::sort(o.begin(), o.end(), [&](std::size_t a, std::size_t b) { return mine[a] < mine[b]; });
+      gids_.resize(owned_);
+      coordinates_.resize(3 * owned_);
+      arrays_.assign(na, std::vector<double>(owned_));
+      for (std::size_t j = 0; j < owned_; ++j) {
+        const std::size_t i = o[j];
+        gids_[j] = mine[i].id;
+        for (int a = 0; a < 3; ++a) coordinates_[3 * j + a] = values[values_per_vertex * i + a];
+        for (std::size_t a = 0; a < na; ++a) arrays_[a][j] = values[values_per_vertex * i + 3 + a];
+      }
+    }
+    std::vector<Morton_record>().swap(mine);
+    std::vector<double>().swap(values);
+
+    // The directory: each block learns the owner of each of its vertices.
+    std::vector<std::int32_t> owner_of(nv, -1);
+    {
+      std::vector<std::vector<Global_id>> send(size_);
+      for (Global_id g : gids_) send[block_of(g)].push_back(g);
+      std::vector<std::size_t> from;
+      const std::vector<Global_id> received = exchange(send, &from);
+      std::size_t k = 0;
+      for (int r = 0; r < size_; ++r)
+        for (std::size_t j = 0; j < from[r]; ++j, ++k) owner_of[received[k] - part.first_vertex] = r;
+    }
+    // The owners of the corners of this part's tetrahedra, asked from the blocks.
+    std::vector<std::int32_t> corner_owner;
+    {
+      std::vector<std::vector<Global_id>> ask(size_);
+      for (const auto& c : part.tetrahedra)
+        for (Global_id g : c) ask[block_of(g)].push_back(g);
+      std::vector<std::size_t> from;
+      const std::vector<Global_id> asked = exchange(ask, &from);
+      std::vector<std::vector<std::int32_t>> answer(size_);
+      std::size_t k = 0;
+      for (int r = 0; r < size_; ++r)
+        for (std::size_t j = 0; j < from[r]; ++j, ++k)
+          answer[r].push_back(owner_of[asked[k] - part.first_vertex]);
+      const std::vector<std::int32_t> answers = exchange(answer);
+      // the answers come back grouped by block, in the order asked: put them back per corner
+      std::vector<std::size_t> next(size_ + 1, 0);
+      for (const auto& c : part.tetrahedra)
+        for (Global_id g : c) ++next[block_of(g) + 1];
+      for (int r = 0; r < size_; ++r) next[r + 1] += next[r];
+      corner_owner.resize(4 * part.tetrahedra.size());
+      for (std::size_t t = 0; t < part.tetrahedra.size(); ++t)
+        for (int i = 0; i < 4; ++i)
+          corner_owner[4 * t + i] = answers[next[block_of(part.tetrahedra[t][i])]++];
+    }
+    std::vector<std::int32_t>().swap(owner_of);
+
+    // Each tetrahedron to the owners of its vertices (once per owner).
+    {
+      std::vector<std::vector<Tetrahedron_record>> send(size_);
+      for (std::size_t t = 0; t < part.tetrahedra.size(); ++t) {
+        Tetrahedron_record rec;
+        rec.vertices = part.tetrahedra[t];
+        rec.id = part.tetrahedron_ids[t];
+        rec.label = part.tetrahedron_labels.empty() ? 0 : part.tetrahedron_labels[t];
+        rec.unused = 0;
+        for (int i = 0; i < 4; ++i) rec.owners[i] = corner_owner[4 * t + i];
+        for (int i = 0; i < 4; ++i) {
+          bool first = true;
+          for (int j = 0; j < i; ++j) first = first && rec.owners[j] != rec.owners[i];
+          if (first) send[rec.owners[i]].push_back(rec);
+        }
+      }
+      std::vector<std::int32_t>().swap(corner_owner);
+      std::vector<std::array<Global_id, 4>>().swap(part.tetrahedra);
+      std::vector<Global_id>().swap(part.tetrahedron_ids);
+      std::vector<int>().swap(part.tetrahedron_labels);
+      tetrahedra_ = exchange(send);
+    }
+    // Sort this rank's tetrahedra by id: the same local order whatever the number of ranks.
+    std::sort(tetrahedra_.begin(), tetrahedra_.end(),
+              [](const Tetrahedron_record& a, const Tetrahedron_record& b) { return a.id < b.id; });
+
+    // The ghost vertices: the other corners of the tetrahedra, grouped by owner, asked from them.
+    std::vector<Id_owner> ghosts;
+    for (const auto& t : tetrahedra_)
+      for (int i = 0; i < 4; ++i)
+        if (t.owners[i] != rank_) ghosts.push_back({t.vertices[i], t.owners[i], 0});
+    std::sort(ghosts.begin(), ghosts.end(), [](const Id_owner& a, const Id_owner& b) {
+      return a.owner != b.owner ? a.owner < b.owner : a.id < b.id;
+    });
+    ghosts.erase(std::unique(ghosts.begin(), ghosts.end(),
+                             [](const Id_owner& a, const Id_owner& b) { return a.id == b.id; }),
+                 ghosts.end());
+    {
+      // owned vertices sorted by global id, for lookups
+      std::vector<std::pair<Global_id, Index>> by_id(owned_);
+      for (std::size_t i = 0; i < owned_; ++i) by_id[i] = {gids_[i], Index(i)};
+      std::sort(by_id.begin(), by_id.end());
+      std::vector<std::vector<Global_id>> ask(size_);
+      for (const auto& g : ghosts) ask[g.owner].push_back(g.id);
+      std::vector<std::size_t> from;
+      const std::vector<Global_id> asked = exchange(ask, &from);
+      halo_send_.assign(size_, {});
+      std::vector<std::vector<double>> answer(size_);
+      std::size_t k = 0;
+      for (int r = 0; r < size_; ++r)
+        for (std::size_t j = 0; j < from[r]; ++j, ++k) {
+          const auto it = std::lower_bound(by_id.begin(), by_id.end(), std::make_pair(asked[k], Index(0)));
+          const Index i = it->second; // the owner has it: the directory said so
+          halo_send_[r].push_back(i);
+          for (int a = 0; a < 3; ++a) answer[r].push_back(coordinates_[3 * i + a]);
+          for (std::size_t a = 0; a < na; ++a) answer[r].push_back(arrays_[a][i]);
+        }
+      const std::vector<double> got = exchange(answer);
+      ghost_owner_.resize(ghosts.size());
+      for (std::size_t j = 0; j < ghosts.size(); ++j) {
+        gids_.push_back(ghosts[j].id);
+        ghost_owner_[j] = ghosts[j].owner;
+        for (int a = 0; a < 3; ++a) coordinates_.push_back(got[values_per_vertex * j + a]);
+        for (std::size_t a = 0; a < na; ++a) arrays_[a].push_back(got[values_per_vertex * j + 3 + a]);
+      }
+    }
+  }
+
+  template <class NP>
+  void build_local(Distributed_mesh_part&, const NP& np) {
+    using Mesh = Indexed_tetrahedral_mesh<Point_3, Index>;
+    std::string error;
+    try {
+      if (gids_.size() > std::size_t((std::numeric_limits<Index>::max)()) ||
+          tetrahedra_.size() > std::size_t((std::numeric_limits<Index>::max)()))
+        throw std::length_error("more than 2^32 vertices or tetrahedra on one rank: use more ranks");
+      Mesh mesh;
+      const std::size_t n = gids_.size();
+      mesh.points.reserve(n);
+      for (std::size_t i = 0; i < n; ++i)
+        mesh.points.emplace_back(coordinates_[3 * i], coordinates_[3 * i + 1], coordinates_[3 * i + 2]);
+      std::vector<double>().swap(coordinates_);
+      std::vector<std::pair<Global_id, Index>> by_id(n);
+      for (std::size_t i = 0; i < n; ++i) by_id[i] = {gids_[i], Index(i)};
+      std::sort(by_id.begin(), by_id.end());
+      auto local = [&](Global_id g) {
+        return std::lower_bound(by_id.begin(), by_id.end(), std::make_pair(g, Index(0)))->second;
+      };
+      mesh.tetrahedra.resize(tetrahedra_.size());
+      tet_gids_.resize(tetrahedra_.size());
+      if (has_labels_) mesh.tetrahedron_labels.resize(tetrahedra_.size());
+      ghost_tetrahedra_ = 0;
+      for (std::size_t t = 0; t < tetrahedra_.size(); ++t) {
+        const auto& rec = tetrahedra_[t];
+        Global_id smallest = rec.vertices[0];
+        int owner = rec.owners[0];
+        for (int i = 0; i < 4; ++i) {
+          mesh.tetrahedra[t][i] = local(rec.vertices[i]);
+          if (rec.vertices[i] < smallest) {
+            smallest = rec.vertices[i];
+            owner = rec.owners[i];
+          }
+        }
+        ghost_tetrahedra_ += owner != rank_;
+        tet_gids_[t] = rec.id;
+        if (has_labels_) mesh.tetrahedron_labels[t] = rec.label;
+      }
+      std::vector<internal::Tetrahedron_record>().swap(tetrahedra_);
+      std::vector<std::pair<Global_id, Index>>().swap(by_id);
+      if (!arrays_.empty()) mesh.point_data.push_back({array_names_[0], arrays_[0]});
+      const auto local_np =
+          parameters::bucket_size(
+              parameters::choose_parameter(parameters::get_parameter(np, internal_np::bucket_size),
+                                           Octree::default_bucket_size))
+              .maximum_depth(parameters::choose_parameter(
+                  parameters::get_parameter(np, internal_np::maximum_depth), Octree::default_max_depth))
+              .vertex_permutation(true)
+              .tetrahedron_permutation(true);
+      local_ = std::make_unique<Octree>(std::move(mesh), local_np);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    internal::agree_on_errors(comm_, error);
+  }
+
+  MPI_Comm comm_;
+  int rank_ = 0, size_ = 1;
+  Global_id global_vertices_ = 0, global_tetrahedra_ = 0;
+  std::vector<Global_id> block_start_;
+  std::vector<std::string> array_names_;
+  std::string label_name_ = "label";
+  bool has_labels_ = false;
+  std::size_t owned_ = 0;
+  std::vector<Global_id> gids_;
+  std::vector<std::int32_t> ghost_owner_;
+  std::vector<double> coordinates_;
+  std::vector<std::vector<double>> arrays_;
+  std::vector<internal::Tetrahedron_record> tetrahedra_;
+  std::vector<Global_id> tet_gids_;
+  std::size_t ghost_tetrahedra_ = 0;
+  std::vector<std::vector<Index>> halo_send_;
+  std::unique_ptr<Octree> local_;
+  double partition_seconds_ = 0, build_seconds_ = 0;
+  mutable std::size_t bytes_ = 0;
+};
+
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_DISTRIBUTED_OCTREE_3_H
