@@ -58,6 +58,8 @@ namespace NP = CGAL::PR_star_octree::parameters;
 using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
 namespace fs = std::filesystem;
 
+void test_vtu_ranges(); // test_io_vtu_ranges.cpp
+
 static fs::path tmp;
 
 static std::string put(const std::string& name, const std::string& content) {
@@ -877,6 +879,7 @@ int main(int argc, char** argv) {
   test_malformed_compressed();
   test_legacy();
   test_vtu_writer();
+  test_vtu_ranges();
   fs::remove_all(tmp);
   return prstar_test::summary("test_io_vtk");
 }
