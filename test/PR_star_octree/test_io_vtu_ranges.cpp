@@ -414,7 +414,7 @@ void test_malformed() {
     CHECK_THROWS(IO::Read_error, message, r.read_cells(0, r.number_of_cells(), t, ids, &labels, skipped));
     CHECK_THROWS(IO::Read_error, message, r.read_cells(cell, cell + 1, t, ids, &labels, skipped));
     CHECK(t.empty() && ids.empty() && labels.empty() && skipped.empty()); // left as they were
-    r.read_cells(0, cell - 1, t, ids, &labels, skipped); // before it: fine
+    r.read_cells(0, cell - 1, t, ids, &labels, skipped);                  // before it: fine
   };
   Grid bad = g;
   bad.connectivity[4 * 3 + 2] = 27;
