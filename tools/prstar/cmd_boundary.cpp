@@ -18,6 +18,46 @@
 
 namespace prstar {
 
+// The summary of the boundary command (one process or distributed): JSON or a table.
+void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
+                     const CGAL::PR_star_octree::Boundary_counts& b, double seconds) {
+  const std::string& input = o.input();
+  const std::size_t kv = o.kv();
+  const std::string out = o.output();
+  if (o.json()) {
+    Json j;
+    j.begin_object().field("vertices", nv).field("tetrahedra", nt).key("kv");
+    json_kv(j, kv)
+        .field("boundary_vertices", b.boundary_vertices)
+        .field("interior_vertices", b.interior_vertices)
+        .field("nonmanifold_vertices", b.nonmanifold_vertices)
+        .field("unreferenced_vertices", b.unreferenced_vertices)
+        .field("boundary_triangles", b.boundary_triangles)
+        .field("boundary_tetrahedra", b.boundary_tetrahedra)
+        .field("boundary_face_tetrahedra", b.boundary_face_tetrahedra)
+        .field("seconds", seconds);
+    if (!out.empty()) j.field("output", out);
+    j.end_object();
+    std::cout << j.str() << '\n';
+    return;
+  }
+  Table t({"", "count"});
+  t.add({"vertices", std::to_string(nv)});
+  t.add({"  interior", std::to_string(b.interior_vertices)});
+  t.add({"  boundary", std::to_string(b.boundary_vertices)});
+  t.add({"  non-manifold", std::to_string(b.nonmanifold_vertices)});
+  t.add({"  in no tetrahedron", std::to_string(b.unreferenced_vertices)});
+  t.add({"boundary triangles", std::to_string(b.boundary_triangles)});
+  t.add({"tetrahedra touching the boundary", std::to_string(b.boundary_tetrahedra)});
+  t.add({"  with a boundary face", std::to_string(b.boundary_face_tetrahedra)});
+  std::cout << input << " (k_v = " << bucket_size_string(kv) << ", " << fixed(seconds, 3) << " s)\n"
+            << t.str();
+  if (b.nonmanifold_vertices)
+    std::cout << "warning: " << b.nonmanifold_vertices
+              << " vertices have a link that is neither a sphere nor a disc (non-manifold)\n";
+  if (!out.empty()) std::cout << "wrote " << out << '\n';
+}
+
 namespace {
 
 using Octree = CGAL::PR_star_octree_3<>;
@@ -71,38 +111,7 @@ int run_boundary(const Options& o) {
     write_octree_mesh(out, view, result);
     progress.finish();
   }
-  if (o.json()) {
-    Json j;
-    j.begin_object().field("vertices", nv).field("tetrahedra", nt).key("kv");
-    json_kv(j, kv)
-        .field("boundary_vertices", b.boundary_vertices)
-        .field("interior_vertices", b.interior_vertices)
-        .field("nonmanifold_vertices", b.nonmanifold_vertices)
-        .field("unreferenced_vertices", b.unreferenced_vertices)
-        .field("boundary_triangles", b.boundary_triangles)
-        .field("boundary_tetrahedra", b.boundary_tetrahedra)
-        .field("boundary_face_tetrahedra", b.boundary_face_tetrahedra)
-        .field("seconds", seconds);
-    if (!out.empty()) j.field("output", out);
-    j.end_object();
-    std::cout << j.str() << '\n';
-    return exit_success;
-  }
-  Table t({"", "count"});
-  t.add({"vertices", std::to_string(nv)});
-  t.add({"  interior", std::to_string(b.interior_vertices)});
-  t.add({"  boundary", std::to_string(b.boundary_vertices)});
-  t.add({"  non-manifold", std::to_string(b.nonmanifold_vertices)});
-  t.add({"  in no tetrahedron", std::to_string(b.unreferenced_vertices)});
-  t.add({"boundary triangles", std::to_string(b.boundary_triangles)});
-  t.add({"tetrahedra touching the boundary", std::to_string(b.boundary_tetrahedra)});
-  t.add({"  with a boundary face", std::to_string(b.boundary_face_tetrahedra)});
-  std::cout << input << " (k_v = " << bucket_size_string(kv) << ", " << fixed(seconds, 3) << " s)\n"
-            << t.str();
-  if (b.nonmanifold_vertices)
-    std::cout << "warning: " << b.nonmanifold_vertices
-              << " vertices have a link that is neither a sphere nor a disc (non-manifold)\n";
-  if (!out.empty()) std::cout << "wrote " << out << '\n';
+  report_boundary(o, nv, nt, b, seconds);
   return exit_success;
 }
 

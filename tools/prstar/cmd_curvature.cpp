@@ -22,6 +22,45 @@
 
 namespace prstar {
 
+// The summary of the curvature command (one process or distributed): JSON or a table.
+void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const std::string& field_name,
+                      const std::size_t counts[4], const Distortion_summary& summary, double seconds) {
+  const std::string& input = o.input();
+  const std::size_t kv = o.kv();
+  const std::string out = o.output(), csv = o.output("--csv");
+  if (o.json()) {
+    Json j;
+    j.begin_object().field("vertices", nv).field("tetrahedra", nt).key("kv");
+    json_kv(j, kv)
+        .field("field", field_name)
+        .field("interior_vertices", counts[0])
+        .field("boundary_vertices", counts[1])
+        .field("nonmanifold_vertices", counts[2])
+        .field("unreferenced_vertices", counts[3]);
+    if (summary.count)
+      j.field("distortion_min", summary.min)
+          .field("distortion_max", summary.max)
+          .field("distortion_mean", summary.mean());
+    j.field("seconds", seconds);
+    if (!out.empty()) j.field("output", out);
+    if (!csv.empty()) j.field("csv", csv);
+    j.end_object();
+    std::cout << j.str() << '\n';
+    return;
+  }
+  std::cout << input << ": distortion of '" << field_name << "' (k_v = " << bucket_size_string(kv) << ", "
+            << fixed(seconds, 3) << " s)\n";
+  Table t({"vertices", "count", "distortion min", "max", "mean"});
+  t.add({"all manifold", std::to_string(summary.count), summary.count ? fixed(summary.min, 6) : "-",
+         summary.count ? fixed(summary.max, 6) : "-", summary.count ? fixed(summary.mean(), 6) : "-"});
+  t.add({"interior", std::to_string(counts[0]), "", "", ""});
+  t.add({"boundary", std::to_string(counts[1]), "", "", ""});
+  t.add({"non-manifold (NaN)", std::to_string(counts[2]), "", "", ""});
+  std::cout << t.str();
+  if (!out.empty()) std::cout << "wrote " << out << '\n';
+  if (!csv.empty()) std::cout << "wrote " << csv << '\n';
+}
+
 namespace {
 
 using Octree = CGAL::PR_star_octree_3<>;
@@ -120,21 +159,13 @@ int run_curvature(const Options& o) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
 
-  // The summary.  The distortions are added in the octree's order (as the tool always did), so that
-  // distortion_mean does not change in the last bits.
+  // The summary: the distortions are added exactly (the same mean in any order, as a distributed
+  // run finds it).
   std::size_t counts[4] = {0, 0, 0, 0};
-  double dmin = std::numeric_limits<double>::infinity(), dmax = -dmin, dsum = 0;
-  std::size_t dn = 0;
+  Distortion_summary summary;
   for (std::size_t v = 0; v < nv; ++v) {
-    const std::size_t u = tree.original_vertex(static_cast<Octree::Index>(v));
-    const int code = curv.code[u];
-    ++counts[code];
-    if (code == 0 || code == 1) { // interior or boundary
-      dmin = std::min(dmin, curv.distortion[u]);
-      dmax = std::max(dmax, curv.distortion[u]);
-      dsum += curv.distortion[u];
-      ++dn;
-    }
+    ++counts[curv.code[v]];
+    if (curv.code[v] <= 1) summary.add(curv.distortion[v]); // interior or boundary
   }
   if (!lean) {
     // the mesh of the octree in the user's vertex order (its points for the CSV), with its arrays
@@ -170,37 +201,7 @@ int run_curvature(const Options& o) {
       progress.finish();
     }
   }
-  if (o.json()) {
-    Json j;
-    j.begin_object().field("vertices", nv).field("tetrahedra", nt).key("kv");
-    json_kv(j, kv)
-        .field("field", field_name)
-        .field("interior_vertices", counts[0])
-        .field("boundary_vertices", counts[1])
-        .field("nonmanifold_vertices", counts[2])
-        .field("unreferenced_vertices", counts[3]);
-    if (dn)
-      j.field("distortion_min", dmin)
-          .field("distortion_max", dmax)
-          .field("distortion_mean", dsum / double(dn));
-    j.field("seconds", seconds);
-    if (!out.empty()) j.field("output", out);
-    if (!csv.empty()) j.field("csv", csv);
-    j.end_object();
-    std::cout << j.str() << '\n';
-    return exit_success;
-  }
-  std::cout << input << ": distortion of '" << field_name << "' (k_v = " << bucket_size_string(kv) << ", "
-            << fixed(seconds, 3) << " s)\n";
-  Table t({"vertices", "count", "distortion min", "max", "mean"});
-  t.add({"all manifold", std::to_string(dn), dn ? fixed(dmin, 6) : "-", dn ? fixed(dmax, 6) : "-",
-         dn ? fixed(dsum / double(dn), 6) : "-"});
-  t.add({"interior", std::to_string(counts[0]), "", "", ""});
-  t.add({"boundary", std::to_string(counts[1]), "", "", ""});
-  t.add({"non-manifold (NaN)", std::to_string(counts[2]), "", "", ""});
-  std::cout << t.str();
-  if (!out.empty()) std::cout << "wrote " << out << '\n';
-  if (!csv.empty()) std::cout << "wrote " << csv << '\n';
+  report_curvature(o, nv, nt, field_name, counts, summary, seconds);
   return exit_success;
 }
 

@@ -15,24 +15,9 @@
 
 namespace prstar {
 
-namespace {
-
-using Octree = CGAL::PR_star_octree_3<>;
-namespace params = CGAL::PR_star_octree::parameters;
-
-int run_validate(const Options& o) {
+// The summary of the validate command (one process or distributed), and its exit status.
+int report_validity(const Options& o, const CGAL::PR_star_octree::Validity_result& r, double seconds) {
   const std::string& input = o.input();
-  const std::size_t kv = o.kv();
-  Progress_bar progress(o.show_progress());
-  const Mesh mesh = read_mesh(input, progress);
-  const auto start = std::chrono::steady_clock::now();
-  progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
-  const Octree tree(CGAL::PR_star_octree::make_input(mesh.points, mesh.tetrahedra),
-                    params::bucket_size(kv).maximum_depth(o.max_depth()));
-  progress.phase("checking the mesh");
-  const auto r = CGAL::PR_star_octree::check_validity(tree, params::progress(progress.callback()));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  progress.finish();
   if (o.json()) {
     Json j;
     j.begin_object()
@@ -64,6 +49,27 @@ int run_validate(const Options& o) {
               << t.str();
   }
   return r.valid ? exit_success : exit_invalid_mesh;
+}
+
+namespace {
+
+using Octree = CGAL::PR_star_octree_3<>;
+namespace params = CGAL::PR_star_octree::parameters;
+
+int run_validate(const Options& o) {
+  const std::string& input = o.input();
+  const std::size_t kv = o.kv();
+  Progress_bar progress(o.show_progress());
+  const Mesh mesh = read_mesh(input, progress);
+  const auto start = std::chrono::steady_clock::now();
+  progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
+  const Octree tree(CGAL::PR_star_octree::make_input(mesh.points, mesh.tetrahedra),
+                    params::bucket_size(kv).maximum_depth(o.max_depth()));
+  progress.phase("checking the mesh");
+  const auto r = CGAL::PR_star_octree::check_validity(tree, params::progress(progress.callback()));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.finish();
+  return report_validity(o, r, seconds);
 }
 
 } // namespace

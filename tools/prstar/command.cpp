@@ -241,7 +241,7 @@ std::string Command::help() const {
   return s.str();
 }
 
-Options Command::parse(int argc, char** argv, int first) const {
+Options Command::parse(int argc, char** argv, int first, bool distributed) const {
   std::vector<std::string> flags{"--json", "--quiet"}, values;
   if (!outputs_.empty()) flags.push_back("--force");
   for (const Declared& d : specific_) (d.value_name.empty() ? flags : values).push_back(d.name);
@@ -310,7 +310,9 @@ Options Command::parse(int argc, char** argv, int first) const {
       if (d.required) throw Usage_error("missing " + label + " " + d.value_name);
       continue;
     }
-    if (d.extension.empty()) {
+    if (distributed && d.option.empty() && ends_with(value, ".pvtu")) {
+      // one piece per rank
+    } else if (d.extension.empty()) {
       if (!CGAL::PR_star_octree::IO::is_writable_extension(value))
         throw Usage_error(value + ": cannot write this format (writable: " +
                           CGAL::PR_star_octree::IO::writable_extensions() + ")");
@@ -387,6 +389,21 @@ std::vector<std::size_t> parse_bucket_list(const std::string& s) {
 Json& json_kv(Json& j, std::size_t kv) {
   if (kv == Octree::infinite_bucket_size) return j.value("inf");
   return j.value(kv);
+}
+
+Command& Command::run_distributed(Run f) {
+  run_distributed_ = std::move(f);
+  return *this;
+}
+
+int Command::execute_distributed(const Options& options) const {
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::global_control> threads;
+  if (options.threads() > 0)
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                    options.threads());
+#endif
+  return run_distributed_(options);
 }
 
 int Command::execute(const Options& options) const {

@@ -82,15 +82,22 @@ public:
   Command& check(Check f);
   /// The function that runs the command; it returns an `Exit_status`.
   Command& run(Run f);
+  /// The function that runs the command under mpirun (several ranks): the same options, and `-o`
+  /// also takes a `.pvtu` (one piece per rank).  Without one, the command is not distributed.
+  Command& run_distributed(Run f);
+  bool is_distributed() const { return static_cast<bool>(run_distributed_); }
 
   const std::string& name() const { return name_; }
   const std::string& summary() const { return summary_; }
   std::string help() const;
   /// Parses `argv[first..argc)`, checks the options and the output files.
   /// \throws Usage_error (exit status 2) or std::runtime_error (an existing output without --force)
-  Options parse(int argc, char** argv, int first) const;
+  /// `distributed`: parsed for `execute_distributed()` (-o also takes `.pvtu`).
+  Options parse(int argc, char** argv, int first, bool distributed = false) const;
   /// Runs the command with the common settings of `options` in force (--threads, --max-memory).
   int execute(const Options& options) const;
+  /// Runs the distributed form of the command (every rank calls it), --threads in force.
+  int execute_distributed(const Options& options) const;
 
 private:
   struct Declared {
@@ -112,7 +119,7 @@ private:
   std::vector<Output_decl> outputs_;
   std::vector<Declared> specific_;
   Check check_;
-  Run run_;
+  Run run_, run_distributed_;
 };
 
 /// The parsed and checked options of a command.

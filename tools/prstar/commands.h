@@ -8,6 +8,14 @@
 
 #include "command.h"
 
+#include <CGAL/PR_star_octree/boundary.h>
+#include <CGAL/PR_star_octree/internal/fixed_point_sum.h>
+#include <CGAL/PR_star_octree/validity.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
 #include <string>
 #include <vector>
 
@@ -26,6 +34,41 @@ Command generate_command();
 void report_statistics(Mesh mesh, const std::string& name, const std::vector<std::size_t>& kvs,
                        std::size_t max_depth, bool json, Progress_bar& progress,
                        const std::string& octree_out = ""); // `--octree`: the leaf boxes of the last k_v
+
+/// The distortions of the manifold vertices: smallest, largest, and their exact sum (the same mean
+/// whatever the order in which they are added, e.g. by several ranks).
+struct Distortion_summary {
+  double min = std::numeric_limits<double>::infinity(), max = -std::numeric_limits<double>::infinity();
+  CGAL::PR_star_octree::internal::Fixed_point_sum<64> sum;
+  std::uint64_t count = 0;
+  void add(double d) {
+    min = std::min(min, d);
+    max = std::max(max, d);
+    sum.add(d);
+    ++count;
+  }
+  void add(const Distortion_summary& o) {
+    min = std::min(min, o.min);
+    max = std::max(max, o.max);
+    sum.add(o.sum);
+    count += o.count;
+  }
+  double mean() const { return sum.value() / double(count); }
+};
+
+/// The summaries printed by boundary, curvature and validate, on one process and distributed (the
+/// same text and JSON keys; cmd_boundary.cpp, cmd_curvature.cpp, cmd_validate.cpp).
+void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
+                     const CGAL::PR_star_octree::Boundary_counts& b, double seconds);
+void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const std::string& field_name,
+                      const std::size_t counts[4], const Distortion_summary& summary, double seconds);
+/// \returns the exit status: valid or not
+int report_validity(const Options& o, const CGAL::PR_star_octree::Validity_result& r, double seconds);
+
+#ifdef PRSTAR_WITH_MPI
+/// Gives stats, boundary, curvature and validate their distributed form (cmd_distributed.cpp).
+void add_distributed_runs(std::vector<Command>& commands);
+#endif
 
 } // namespace prstar
 

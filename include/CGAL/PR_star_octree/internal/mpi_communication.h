@@ -24,6 +24,15 @@
 
 namespace CGAL {
 namespace PR_star_octree {
+
+/// \ingroup PkgPRStarOctreeDistributed
+/// The error of a collective operation, raised on every rank with the same message (the message of
+/// the first rank that failed, prefixed by its rank when there are several).
+class Distributed_error : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
 namespace internal {
 
 /// An MPI datatype of `sizeof(T)` bytes, freed with the object.
@@ -148,7 +157,7 @@ T sum_in_rank_order(MPI_Comm comm, const T& value) {
 }
 
 /// A failure on any rank raised on every rank: call it at points every rank reaches, with the local
-/// error message (empty when this rank is fine).  Throws `std::runtime_error` with the first
+/// error message (empty when this rank is fine).  Throws `Distributed_error` with the first
 /// failing rank's message (prefixed by its rank when there are several ranks) on every rank.
 inline void agree_on_errors(MPI_Comm comm, const std::string& local_error) {
   const int failed = local_error.empty() ? 0 : 1;
@@ -164,7 +173,7 @@ inline void agree_on_errors(MPI_Comm comm, const std::string& local_error) {
   std::string message = me == first_failed ? local_error : std::string(n, ' ');
   MPI_Bcast(&message[0], checked_count(n), MPI_CHAR, first_failed, comm);
   if (p > 1 && message.find("rank ") != 0) message = "rank " + std::to_string(first_failed) + ": " + message;
-  throw std::runtime_error(message);
+  throw Distributed_error(message);
 }
 
 /// Runs `f()`, then agrees with the other ranks on whether any of them failed (see
