@@ -13,8 +13,10 @@ build=(g++ make cmake libcgal-dev libboost-dev libeigen3-dev libtbb-dev libgmp-d
        libtet1.5-dev zlib1g-dev liblz4-dev liblzma-dev)
 # Testing only (each test that needs one is skipped without it): doxygen for `doxygen_warnings`
 # (zero warnings in the reference manual); VTK's and meshio's Python bindings and gmsh for the
-# format interoperability tests; xvfb to render the pictures (scripts/make_pictures.sh) off screen.
-test_only=(doxygen python3-vtk9 python3-meshio gmsh xvfb)
+# format interoperability tests; xvfb to render the pictures (scripts/make_pictures.sh) off screen;
+# Open MPI for the distributed octree (optional: without it the MPI tool commands, tests and
+# example are not built).
+test_only=(doxygen python3-vtk9 python3-meshio gmsh xvfb libopenmpi-dev openmpi-bin)
 case "${1:-}" in
   --build-only) packages=("${build[@]}") ;;
   "") packages=("${build[@]}" "${test_only[@]}") ;;

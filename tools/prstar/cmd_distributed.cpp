@@ -186,11 +186,12 @@ int curvature_distributed(const Options& o) {
     if (it == names.end()) {
       std::string known;
       for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-      throw std::runtime_error(o.input() + ": " +
-                               (field_name.empty() ? std::string("the mesh has no point data")
-                                                   : "no point-data array named '" + field_name + "'") +
-                               (known.empty() ? "" : " (it has: " + known + ")") +
-                               "; use --field x|y|z for a coordinate");
+      throw PRS::Distributed_error(o.input() + ": " + // the same on every rank
+
+                                   (field_name.empty() ? std::string("the mesh has no point data")
+                                                       : "no point-data array named '" + field_name + "'") +
+                                   (known.empty() ? "" : " (it has: " + known + ")") +
+                                   "; use --field x|y|z for a coordinate");
     }
     field_name = *it;
     field = &tree->point_array(std::size_t(it - names.begin()));
@@ -229,22 +230,12 @@ int curvature_distributed(const Options& o) {
   }
 
   const std::string out = o.output(), csv = o.output("--csv");
-  for (double& x : distortion)
-    if (!std::isfinite(x) && !out.empty()) x = 0; // as one process writes them (NaN: boundary = 2)
-  for (double& x : domain)
-    if (!std::isfinite(x)) x = 0;
   if (!out.empty() || !csv.empty()) {
     tree->update_ghosts(codes);
     tree->update_ghosts(distortion);
     tree->update_ghosts(domain);
   }
-  if (!out.empty()) {
-    progress.phase("writing " + out);
-    write_output(out, *tree,
-                 {{"boundary", &codes}, {"distortion", &distortion}, {"domain_curvature", &domain}});
-    progress.finish();
-  }
-  if (!csv.empty()) {
+  if (!csv.empty()) { // as one process writes it: in the input's order, nan where undefined
     progress.phase("writing " + csv);
     const Mesh mesh = PRS::IO::gather_mesh(*tree, {{"boundary", &codes}, {"distortion", &distortion}});
     PRS::internal::run_collectively(tree->communicator(), [&] {
@@ -262,6 +253,16 @@ int curvature_distributed(const Options& o) {
         if (!f) throw std::runtime_error(csv + ": cannot write the output file");
       });
     });
+    progress.finish();
+  }
+  if (!out.empty()) {
+    // as one process writes them: the undefined values (non-manifold vertices) as 0
+    for (auto* a : {&distortion, &domain})
+      for (double& x : *a)
+        if (!std::isfinite(x)) x = 0;
+    progress.phase("writing " + out);
+    write_output(out, *tree,
+                 {{"boundary", &codes}, {"distortion", &distortion}, {"domain_curvature", &domain}});
     progress.finish();
   }
   if (tree->rank() == 0)
