@@ -13,11 +13,22 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace PR_star_octree {
+
+/// \ingroup PkgPRStarOctreeDistributed
+/// The error of a collective operation of the distributed octree (reading, building, writing),
+/// raised on every rank with the same message: the message of the first rank that failed, prefixed
+/// by its rank when there are several.  Every rank can thus end cleanly (no rank waits for a failed
+/// one).
+class Distributed_error : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
 
 /// \ingroup PkgPRStarOctreeDistributed
 /// The part of a mesh one rank starts from: a contiguous block of the vertices (global ids

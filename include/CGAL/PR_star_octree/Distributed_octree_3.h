@@ -142,7 +142,7 @@ public:
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   ///
-  /// \throws std::runtime_error on every rank, with the same message, if the parts are not a mesh
+  /// \throws Distributed_error on every rank, with the same message, if the parts are not a mesh
   ///         (a vertex id out of range, vertex blocks that do not follow each other) or the local
   ///         octree of a rank cannot be built
   template <class NP = parameters::Default_named_parameters>

@@ -177,7 +177,7 @@ inline Distributed_mesh_part read_vtu_ranges(const std::string& file, const Vtu_
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::runtime_error on every rank, with the message of the rank that failed (a missing or
+/// \throws Distributed_error on every rank, with the message of the rank that failed (a missing or
 ///         malformed file: the file, the line or element, what is wrong)
 template <class NP = parameters::Default_named_parameters>
 Distributed_mesh_part read_mesh_part(const std::string& file, const NP& np = parameters::default_values()) {
@@ -211,7 +211,7 @@ struct Distributed_point_array {
 /// and `point_arrays` (then the input's point arrays) as point data.  ParaView and VTK open it as
 /// one mesh; removing the ghost cells leaves each tetrahedron once.  Each file is written through a
 /// temporary and renamed.
-/// \throws std::runtime_error on every rank if a rank cannot write its piece
+/// \throws Distributed_error on every rank if a rank cannot write its piece
 template <class GT>
 void write_pvtu(const std::string& file, const Distributed_octree_3<GT>& tree,
                 const std::vector<Distributed_point_array>& point_arrays) {

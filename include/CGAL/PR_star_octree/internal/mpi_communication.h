@@ -10,6 +10,8 @@
 // message may exceed 2 GB), and the collective agreement on errors: a failure on one rank becomes
 // the same exception on every rank, never a hang.
 
+#include <CGAL/PR_star_octree/Distributed_mesh_part.h>
+
 #include <mpi.h>
 
 #include <algorithm>
@@ -24,14 +26,6 @@
 
 namespace CGAL {
 namespace PR_star_octree {
-
-/// \ingroup PkgPRStarOctreeDistributed
-/// The error of a collective operation, raised on every rank with the same message (the message of
-/// the first rank that failed, prefixed by its rank when there are several).
-class Distributed_error : public std::runtime_error {
-public:
-  using std::runtime_error::runtime_error;
-};
 
 namespace internal {
 
