@@ -102,7 +102,6 @@ PRS::Distributed_mesh_part part_of(const Mesh& m) {
   for (auto t = tb.first; t < tb.second; ++t) {
     const auto& c = m.tetrahedra[t];
     part.tetrahedra.push_back({{c[0], c[1], c[2], c[3]}});
-    part.tetrahedron_ids.push_back(t);
     if (!m.tetrahedron_labels.empty()) part.tetrahedron_labels.push_back(m.tetrahedron_labels[t]);
   }
   return part;
@@ -279,7 +278,6 @@ void test_bad_parts() {
   });
   PRS::Distributed_mesh_part part = part_of(m);
   if (rank_ == ranks_ - 1) part.tetrahedra.push_back({{0, 1, 2, 1000}});
-  if (rank_ == ranks_ - 1) part.tetrahedron_ids.push_back(999);
   if (rank_ == ranks_ - 1 && !part.tetrahedron_labels.empty()) part.tetrahedron_labels.push_back(1);
   CHECK_THROWS(std::runtime_error, "has vertex 1000", Distributed(std::move(part)));
 }

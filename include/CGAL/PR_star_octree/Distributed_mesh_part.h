@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -47,16 +48,32 @@ struct Distributed_mesh_part {
   std::vector<std::string> point_array_names;
   /// one vector per name, one value per vertex of the block
   std::vector<std::vector<double>> point_arrays;
-  /// the tetrahedra of the part, by global vertex ids
+  /// the tetrahedra of the part, by global vertex ids.  Over the ranks, in rank order, the parts'
+  /// tetrahedra are the tetrahedra of the mesh: their index in that order is their global id.
   std::vector<std::array<std::uint64_t, 4>> tetrahedra;
-  /// the global id of each tetrahedron (its cell index in the input file), for the output
-  std::vector<std::uint64_t> tetrahedron_ids;
   /// empty, or one label per tetrahedron (the same choice on every rank)
   std::vector<int> tetrahedron_labels;
   /// the name of the label array for the output (VTK cell array name)
   std::string label_name = "label";
   /// cells of other types met and not kept by this rank's reader, by type name
   std::map<std::string, std::size_t> skipped_cells;
+
+  /// \name Deferred tetrahedra
+  /// Instead of `tetrahedra` and `tetrahedron_labels` (then empty), a part may give its tetrahedra
+  /// in blocks read on demand: the construction of `Distributed_octree_3` calls
+  /// `read_tetrahedra(k, tetrahedra, labels)` for `k = 0 ... tetrahedron_blocks - 1`, twice (one
+  /// pass counts the stars, the other sends the tetrahedra to their ranks), each time with empty
+  /// vectors to fill with block `k` (labels: one per tetrahedron, when `deferred_labels`).  A rank
+  /// then never holds all of its part's tetrahedra at once.  `IO::read_mesh_part()` reads an
+  /// appended-raw `.vtu` this way.  An exception thrown by the function is raised on every rank
+  /// (`Distributed_error`).
+  /// @{
+  std::size_t tetrahedron_blocks = 0;
+  bool deferred_labels = false;
+  std::function<void(std::size_t block, std::vector<std::array<std::uint64_t, 4>>& tetrahedra,
+                     std::vector<int>& labels)>
+      read_tetrahedra;
+  /// @}
 
   /// the number of vertices of the block
   std::size_t number_of_vertices() const { return coordinates.size() / 3; }

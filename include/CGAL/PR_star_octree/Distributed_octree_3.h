@@ -29,6 +29,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -159,7 +160,7 @@ public:
     };
     partition(part);
     lap(partition_seconds_);
-    build_local(part, np);
+    build_local(np);
     lap(build_seconds_);
   }
 
@@ -274,24 +275,84 @@ private:
     return internal::all_to_all(comm_, send, counts);
   }
 
+  // The blocks one after the other, each freed once copied: the peak is the result plus a block.
+  template <class T>
+  static std::vector<T> flatten(std::vector<std::vector<T>>& blocks) {
+    std::size_t n = 0;
+    for (const auto& b : blocks) n += b.size();
+    std::vector<T> r;
+    r.reserve(n);
+    for (auto& b : blocks) {
+      r.insert(r.end(), b.begin(), b.end());
+      std::vector<T>().swap(b);
+    }
+    blocks.clear();
+    return r;
+  }
+
   // The rank whose input block holds global vertex id g.
   int block_of(Global_id g) const {
     return int(std::upper_bound(block_start_.begin(), block_start_.end(), g) - block_start_.begin()) - 1;
   }
 
+  // Calls f(tetrahedra, labels, first) for each block of this rank's part (first: the position of
+  // the block's first tetrahedron in the part), in order.  Collective: every rank runs the same
+  // number of rounds (a rank with fewer blocks gets empty ones), and a failure to read a block on
+  // any rank is raised on every rank before `f` runs.
+  template <class F>
+  void for_each_block(Distributed_mesh_part& part, F f) {
+    constexpr std::size_t block = std::size_t(1) << 20;
+    const bool deferred = static_cast<bool>(part.read_tetrahedra);
+    const std::size_t mine =
+        deferred ? part.tetrahedron_blocks : (part.tetrahedra.size() + block - 1) / block;
+    std::uint64_t local = mine, rounds = 0;
+    MPI_Allreduce(&local, &rounds, 1, MPI_UINT64_T, MPI_MAX, comm_);
+    std::vector<std::array<Global_id, 4>> tets;
+    std::vector<int> labels;
+    std::size_t first = 0;
+    for (std::size_t k = 0; k < rounds; ++k) {
+      tets.clear();
+      labels.clear();
+      std::string error;
+      if (k < mine) {
+        if (deferred) {
+          try {
+            part.read_tetrahedra(k, tets, labels);
+            if (part.deferred_labels && labels.size() != tets.size())
+              error = "block " + std::to_string(k) + ": " + std::to_string(labels.size()) + " labels for " +
+                      std::to_string(tets.size()) + " tetrahedra";
+          } catch (const std::exception& e) {
+            error = e.what();
+          }
+        } else {
+          const std::size_t b = k * block, e = (std::min)(part.tetrahedra.size(), b + block);
+          tets.assign(part.tetrahedra.begin() + std::ptrdiff_t(b),
+                      part.tetrahedra.begin() + std::ptrdiff_t(e));
+          if (!part.tetrahedron_labels.empty())
+            labels.assign(part.tetrahedron_labels.begin() + std::ptrdiff_t(b),
+                          part.tetrahedron_labels.begin() + std::ptrdiff_t(e));
+        }
+      }
+      internal::agree_on_errors(comm_, error);
+      f(tets, labels, first);
+      first += tets.size();
+    }
+  }
+
   void partition(Distributed_mesh_part& part) {
     using namespace internal;
     const std::size_t nv = part.number_of_vertices();
+    const bool deferred = static_cast<bool>(part.read_tetrahedra);
     // The input blocks and the global sizes.
     std::string error;
     if (part.coordinates.size() % 3 != 0) error = "the coordinates are not triples";
     for (const auto& a : part.point_arrays)
       if (error.empty() && a.size() != nv) error = "a point array does not have one value per vertex";
+    if (error.empty() && part.point_arrays.size() != part.point_array_names.size())
+      error = "the point arrays and their names differ in number";
     if (error.empty() && !part.tetrahedron_labels.empty() &&
         part.tetrahedron_labels.size() != part.tetrahedra.size())
       error = "the labels are not one per tetrahedron";
-    if (error.empty() && part.tetrahedron_ids.size() != part.tetrahedra.size())
-      error = "the tetrahedron ids are not one per tetrahedron";
     const std::vector<Global_id> firsts = all_gather<Global_id>(comm_, part.first_vertex);
     const std::vector<Global_id> counts = all_gather<Global_id>(comm_, Global_id(nv));
     block_start_.assign(firsts.begin(), firsts.end());
@@ -304,28 +365,19 @@ private:
       global_vertices_ += counts[r];
     }
     block_start_.push_back(global_vertices_);
-    for (std::size_t t = 0; t < part.tetrahedra.size() && error.empty(); ++t)
-      for (Global_id g : part.tetrahedra[t])
-        if (g >= global_vertices_) {
-          error = "tetrahedron " + std::to_string(part.tetrahedron_ids[t]) + " has vertex " +
-                  std::to_string(g) + ", but the mesh has " + std::to_string(global_vertices_) + " vertices";
-          break;
-        }
     agree_on_errors(comm_, error);
-    global_tetrahedra_ = sum_in_rank_order<Global_id>(comm_, part.tetrahedra.size());
     array_names_ = part.point_array_names;
     label_name_ = part.label_name;
-    has_labels_ = !part.tetrahedron_labels.empty();
-    int any_labels = has_labels_ ? 1 : 0, all_labels = 0;
+    int any_labels = (deferred ? part.deferred_labels : !part.tetrahedron_labels.empty()) ? 1 : 0,
+        all_labels = 0;
     MPI_Allreduce(&any_labels, &all_labels, 1, MPI_INT, MPI_MAX, comm_);
     has_labels_ = all_labels != 0;
 
     // The bounding box of the whole mesh.
     double lo[3], hi[3];
     {
-      double box[6] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                       std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                       std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+      double box[6];
+      for (double& b : box) b = std::numeric_limits<double>::infinity();
       for (std::size_t i = 0; i < nv; ++i)
         for (int a = 0; a < 3; ++a) {
           box[a] = (std::min)(box[a], part.coordinates[3 * i + a]);
@@ -343,14 +395,32 @@ private:
       if (hi[a] > lo[a]) extent = (std::max)(extent, hi[a] - lo[a]);
     const double inverse_extent = extent > 0 ? 1. / extent : 0.;
 
-    // The star sizes of the block's vertices: each corner of each tetrahedron to its block.
+    // Pass 1 over the tetrahedra: check the vertex ids, and count the star sizes of the block's
+    // vertices (each corner to the rank whose input block has it).
     std::vector<std::uint32_t> star(nv, 0);
-    {
+    std::uint64_t part_tetrahedra = 0;
+    for_each_block(part, [&](const std::vector<std::array<Global_id, 4>>& tets, const std::vector<int>&,
+                             std::size_t first) {
+      std::string bad;
+      for (std::size_t t = 0; t < tets.size() && bad.empty(); ++t)
+        for (Global_id g : tets[t])
+          if (g >= global_vertices_) {
+            bad = "tetrahedron " + std::to_string(first + t) + " of rank " + std::to_string(rank_) +
+                  "'s part has vertex " + std::to_string(g) + ", but the mesh has " +
+                  std::to_string(global_vertices_) + " vertices";
+            break;
+          }
+      agree_on_errors(comm_, bad);
       std::vector<std::vector<Global_id>> send(size_);
-      for (const auto& c : part.tetrahedra)
+      for (const auto& c : tets)
         for (Global_id g : c) send[block_of(g)].push_back(g);
       for (Global_id g : exchange(send)) ++star[g - part.first_vertex];
-    }
+      part_tetrahedra += tets.size();
+    });
+    global_tetrahedra_ = sum_in_rank_order<Global_id>(comm_, part_tetrahedra);
+    Global_id first_tetrahedron = 0;
+    MPI_Exscan(&part_tetrahedra, &first_tetrahedron, 1, MPI_UINT64_T, MPI_SUM, comm_);
+    if (rank_ == 0) first_tetrahedron = 0;
 
     // Parallel sample sort by (Morton key, id), weighted by 1 + star size.
     std::vector<Morton_record> records(nv);
@@ -393,6 +463,7 @@ private:
         splitters.push_back(
             {(std::numeric_limits<std::uint64_t>::max)(), (std::numeric_limits<std::uint64_t>::max)()});
     }
+    std::vector<std::uint32_t>().swap(star);
     // Send each vertex to its range: the record, then x, y, z and the arrays.
     const std::size_t na = part.point_arrays.size(), values_per_vertex = 3 + na;
     std::vector<Morton_record> mine;
@@ -434,7 +505,7 @@ private:
     std::vector<Morton_record>().swap(mine);
     std::vector<double>().swap(values);
 
-    // The directory: each block learns the owner of each of its vertices.
+    // The directory: each input block learns the owner of each of its vertices.
     std::vector<std::int32_t> owner_of(nv, -1);
     {
       std::vector<std::vector<Global_id>> send(size_);
@@ -445,76 +516,112 @@ private:
       for (int r = 0; r < size_; ++r)
         for (std::size_t j = 0; j < from[r]; ++j, ++k) owner_of[received[k] - part.first_vertex] = r;
     }
-    // The owners of the corners of this part's tetrahedra, asked from the blocks.
-    std::vector<std::int32_t> corner_owner;
-    {
-      std::vector<std::vector<Global_id>> ask(size_);
-      for (const auto& c : part.tetrahedra)
-        for (Global_id g : c) ask[block_of(g)].push_back(g);
-      std::vector<std::size_t> from;
-      const std::vector<Global_id> asked = exchange(ask, &from);
-      std::vector<std::vector<std::int32_t>> answer(size_);
-      std::size_t k = 0;
-      for (int r = 0; r < size_; ++r)
-        for (std::size_t j = 0; j < from[r]; ++j, ++k)
-          answer[r].push_back(owner_of[asked[k] - part.first_vertex]);
-      const std::vector<std::int32_t> answers = exchange(answer);
-      // the answers come back grouped by block, in the order asked: put them back per corner
-      std::vector<std::size_t> next(size_ + 1, 0);
-      for (const auto& c : part.tetrahedra)
-        for (Global_id g : c) ++next[block_of(g) + 1];
-      for (int r = 0; r < size_; ++r) next[r + 1] += next[r];
-      corner_owner.resize(4 * part.tetrahedra.size());
-      for (std::size_t t = 0; t < part.tetrahedra.size(); ++t)
-        for (int i = 0; i < 4; ++i)
-          corner_owner[4 * t + i] = answers[next[block_of(part.tetrahedra[t][i])]++];
-    }
-    std::vector<std::int32_t>().swap(owner_of);
+    // The owned vertices by global id, for the lookups of the arriving tetrahedra.
+    std::vector<std::pair<Global_id, Index>> by_id(owned_);
+    for (std::size_t i = 0; i < owned_; ++i) by_id[i] = {gids_[i], Index(i)};
+    std::sort(by_id.begin(), by_id.end());
+    std::unordered_map<Global_id, Index> ghost_index; // global id -> ghost number
+    std::vector<Id_owner> ghosts;
 
-    // Each tetrahedron to the owners of its vertices (once per owner).
-    {
+    // Pass 2 over the tetrahedra, block by block: ask the owners of the corners from the input
+    // blocks, send each tetrahedron to the owners of its vertices (once per owner); each rank stores
+    // what it receives at once in local indices (owned vertices, then ghosts as they come).
+    for_each_block(part, [&](const std::vector<std::array<Global_id, 4>>& tets,
+                             const std::vector<int>& labels, std::size_t first) {
+      std::vector<std::int32_t> corner_owner(4 * tets.size());
+      {
+        std::vector<std::vector<Global_id>> ask(size_);
+        for (const auto& c : tets)
+          for (Global_id g : c) ask[block_of(g)].push_back(g);
+        std::vector<std::size_t> from;
+        const std::vector<Global_id> asked = exchange(ask, &from);
+        std::vector<std::vector<std::int32_t>> answer(size_);
+        std::size_t k = 0;
+        for (int r = 0; r < size_; ++r)
+          for (std::size_t j = 0; j < from[r]; ++j, ++k)
+            answer[r].push_back(owner_of[asked[k] - part.first_vertex]);
+        const std::vector<std::int32_t> answers = exchange(answer);
+        // the answers come back grouped by input block, in the order asked
+        std::vector<std::size_t> next(size_ + 1, 0);
+        for (const auto& c : tets)
+          for (Global_id g : c) ++next[block_of(g) + 1];
+        for (int r = 0; r < size_; ++r) next[r + 1] += next[r];
+        for (std::size_t t = 0; t < tets.size(); ++t)
+          for (int i = 0; i < 4; ++i) corner_owner[4 * t + i] = answers[next[block_of(tets[t][i])]++];
+      }
       std::vector<std::vector<Tetrahedron_record>> send(size_);
-      for (std::size_t t = 0; t < part.tetrahedra.size(); ++t) {
+      for (std::size_t t = 0; t < tets.size(); ++t) {
         Tetrahedron_record rec;
-        rec.vertices = part.tetrahedra[t];
-        rec.id = part.tetrahedron_ids[t];
-        rec.label = part.tetrahedron_labels.empty() ? 0 : part.tetrahedron_labels[t];
+        rec.vertices = tets[t];
+        rec.id = first_tetrahedron + first + t;
+        rec.label = labels.empty() ? 0 : labels[t];
         rec.unused = 0;
         for (int i = 0; i < 4; ++i) rec.owners[i] = corner_owner[4 * t + i];
         for (int i = 0; i < 4; ++i) {
-          bool first = true;
-          for (int j = 0; j < i; ++j) first = first && rec.owners[j] != rec.owners[i];
-          if (first) send[rec.owners[i]].push_back(rec);
+          bool first_time = true;
+          for (int j = 0; j < i; ++j) first_time = first_time && rec.owners[j] != rec.owners[i];
+          if (first_time) send[rec.owners[i]].push_back(rec);
         }
       }
-      std::vector<std::int32_t>().swap(corner_owner);
-      std::vector<std::array<Global_id, 4>>().swap(part.tetrahedra);
-      std::vector<Global_id>().swap(part.tetrahedron_ids);
-      std::vector<int>().swap(part.tetrahedron_labels);
-      tetrahedra_ = exchange(send);
-    }
-    // Sort this rank's tetrahedra by id: the same local order whatever the number of ranks.
-    std::sort(tetrahedra_.begin(), tetrahedra_.end(),
-              [](const Tetrahedron_record& a, const Tetrahedron_record& b) { return a.id < b.id; });
-
-    // The ghost vertices: the other corners of the tetrahedra, grouped by owner, asked from them.
-    std::vector<Id_owner> ghosts;
-    for (const auto& t : tetrahedra_)
-      for (int i = 0; i < 4; ++i)
-        if (t.owners[i] != rank_) ghosts.push_back({t.vertices[i], t.owners[i], 0});
-    std::sort(ghosts.begin(), ghosts.end(), [](const Id_owner& a, const Id_owner& b) {
-      return a.owner != b.owner ? a.owner < b.owner : a.id < b.id;
+      const std::vector<Tetrahedron_record> received = exchange(send);
+      // one block per round, flattened once at the end (no reallocation of a growing vector)
+      tetrahedron_blocks_.emplace_back();
+      tetrahedron_blocks_.back().reserve(received.size());
+      id_blocks_.emplace_back();
+      id_blocks_.back().reserve(received.size());
+      label_blocks_.emplace_back();
+      for (const Tetrahedron_record& rec : received) {
+        std::array<Index, 4> c;
+        Global_id smallest = rec.vertices[0];
+        int owner = rec.owners[0];
+        for (int i = 0; i < 4; ++i) {
+          const Global_id g = rec.vertices[i];
+          if (rec.owners[i] == rank_) {
+            c[i] = std::lower_bound(by_id.begin(), by_id.end(), std::make_pair(g, Index(0)))->second;
+          } else {
+            const auto it = ghost_index.emplace(g, Index(ghosts.size())).first;
+            if (it->second == ghosts.size()) ghosts.push_back({g, rec.owners[i], 0});
+            c[i] = Index(owned_) + it->second; // a ghost number for now
+          }
+          if (g < smallest) {
+            smallest = g;
+            owner = rec.owners[i];
+          }
+        }
+        ghost_tetrahedra_ += owner != rank_;
+        tetrahedron_blocks_.back().push_back(c);
+        id_blocks_.back().push_back(rec.id);
+        if (has_labels_) label_blocks_.back().push_back(rec.label);
+      }
     });
-    ghosts.erase(std::unique(ghosts.begin(), ghosts.end(),
-                             [](const Id_owner& a, const Id_owner& b) { return a.id == b.id; }),
-                 ghosts.end());
+    std::vector<std::int32_t>().swap(owner_of);
+    std::vector<std::array<Global_id, 4>>().swap(part.tetrahedra);
+    std::vector<int>().swap(part.tetrahedron_labels);
+    part.read_tetrahedra = nullptr;
+    std::unordered_map<Global_id, Index>().swap(ghost_index);
+    std::vector<std::pair<Global_id, Index>>().swap(by_id);
+
+    // The ghosts grouped by owner and sorted by id (the order of the ghost updates); their
+    // coordinates and point values asked from their owners.
+    std::vector<Index> ghost_order(ghosts.size()), ghost_rank(ghosts.size());
+    for (std::size_t j = 0; j < ghosts.size(); ++j) ghost_order[j] = Index(j);
+    std::sort(ghost_order.begin(), ghost_order.end(), [&](Index a, Index b) {
+      return ghosts[a].owner != ghosts[b].owner ? ghosts[a].owner < ghosts[b].owner
+                                                : ghosts[a].id < ghosts[b].id;
+    });
+    for (std::size_t j = 0; j < ghosts.size(); ++j) ghost_rank[ghost_order[j]] = Index(j);
+    for (auto& block : tetrahedron_blocks_)
+      for (auto& c : block)
+        for (Index& v : c)
+          if (v >= owned_) v = Index(owned_) + ghost_rank[v - owned_];
+    tet_gids_ = flatten(id_blocks_);
+    std::vector<Index>().swap(ghost_rank);
     {
-      // owned vertices sorted by global id, for lookups
-      std::vector<std::pair<Global_id, Index>> by_id(owned_);
-      for (std::size_t i = 0; i < owned_; ++i) by_id[i] = {gids_[i], Index(i)};
-      std::sort(by_id.begin(), by_id.end());
+      std::vector<std::pair<Global_id, Index>> owned_by_id(owned_);
+      for (std::size_t i = 0; i < owned_; ++i) owned_by_id[i] = {gids_[i], Index(i)};
+      std::sort(owned_by_id.begin(), owned_by_id.end());
       std::vector<std::vector<Global_id>> ask(size_);
-      for (const auto& g : ghosts) ask[g.owner].push_back(g.id);
+      for (Index j : ghost_order) ask[ghosts[j].owner].push_back(ghosts[j].id);
       std::vector<std::size_t> from;
       const std::vector<Global_id> asked = exchange(ask, &from);
       halo_send_.assign(size_, {});
@@ -522,7 +629,8 @@ private:
       std::size_t k = 0;
       for (int r = 0; r < size_; ++r)
         for (std::size_t j = 0; j < from[r]; ++j, ++k) {
-          const auto it = std::lower_bound(by_id.begin(), by_id.end(), std::make_pair(asked[k], Index(0)));
+          const auto it =
+              std::lower_bound(owned_by_id.begin(), owned_by_id.end(), std::make_pair(asked[k], Index(0)));
           const Index i = it->second; // the owner has it: the directory said so
           halo_send_[r].push_back(i);
           for (int a = 0; a < 3; ++a) answer[r].push_back(coordinates_[3 * i + a]);
@@ -531,8 +639,9 @@ private:
       const std::vector<double> got = exchange(answer);
       ghost_owner_.resize(ghosts.size());
       for (std::size_t j = 0; j < ghosts.size(); ++j) {
-        gids_.push_back(ghosts[j].id);
-        ghost_owner_[j] = ghosts[j].owner;
+        const Id_owner& g = ghosts[ghost_order[j]];
+        gids_.push_back(g.id);
+        ghost_owner_[j] = g.owner;
         for (int a = 0; a < 3; ++a) coordinates_.push_back(got[values_per_vertex * j + a]);
         for (std::size_t a = 0; a < na; ++a) arrays_[a].push_back(got[values_per_vertex * j + 3 + a]);
       }
@@ -540,12 +649,12 @@ private:
   }
 
   template <class NP>
-  void build_local(Distributed_mesh_part&, const NP& np) {
+  void build_local(const NP& np) {
     using Mesh = Indexed_tetrahedral_mesh<Point_3, Index>;
     std::string error;
     try {
       if (gids_.size() > std::size_t((std::numeric_limits<Index>::max)()) ||
-          tetrahedra_.size() > std::size_t((std::numeric_limits<Index>::max)()))
+          tet_gids_.size() > std::size_t((std::numeric_limits<Index>::max)()))
         throw std::length_error("more than 2^32 vertices or tetrahedra on one rank: use more ranks");
       Mesh mesh;
       const std::size_t n = gids_.size();
@@ -553,33 +662,8 @@ private:
       for (std::size_t i = 0; i < n; ++i)
         mesh.points.emplace_back(coordinates_[3 * i], coordinates_[3 * i + 1], coordinates_[3 * i + 2]);
       std::vector<double>().swap(coordinates_);
-      std::vector<std::pair<Global_id, Index>> by_id(n);
-      for (std::size_t i = 0; i < n; ++i) by_id[i] = {gids_[i], Index(i)};
-      std::sort(by_id.begin(), by_id.end());
-      auto local = [&](Global_id g) {
-        return std::lower_bound(by_id.begin(), by_id.end(), std::make_pair(g, Index(0)))->second;
-      };
-      mesh.tetrahedra.resize(tetrahedra_.size());
-      tet_gids_.resize(tetrahedra_.size());
-      if (has_labels_) mesh.tetrahedron_labels.resize(tetrahedra_.size());
-      ghost_tetrahedra_ = 0;
-      for (std::size_t t = 0; t < tetrahedra_.size(); ++t) {
-        const auto& rec = tetrahedra_[t];
-        Global_id smallest = rec.vertices[0];
-        int owner = rec.owners[0];
-        for (int i = 0; i < 4; ++i) {
-          mesh.tetrahedra[t][i] = local(rec.vertices[i]);
-          if (rec.vertices[i] < smallest) {
-            smallest = rec.vertices[i];
-            owner = rec.owners[i];
-          }
-        }
-        ghost_tetrahedra_ += owner != rank_;
-        tet_gids_[t] = rec.id;
-        if (has_labels_) mesh.tetrahedron_labels[t] = rec.label;
-      }
-      std::vector<internal::Tetrahedron_record>().swap(tetrahedra_);
-      std::vector<std::pair<Global_id, Index>>().swap(by_id);
+      mesh.tetrahedra = flatten(tetrahedron_blocks_);
+      mesh.tetrahedron_labels = flatten(label_blocks_);
       if (!arrays_.empty()) mesh.point_data.push_back({array_names_[0], arrays_[0]});
       const auto local_np =
           parameters::bucket_size(
@@ -608,7 +692,10 @@ private:
   std::vector<std::int32_t> ghost_owner_;
   std::vector<double> coordinates_;
   std::vector<std::vector<double>> arrays_;
-  std::vector<internal::Tetrahedron_record> tetrahedra_;
+  // the tetrahedra received, one block per round, until the local octree takes them
+  std::vector<std::vector<std::array<Index, 4>>> tetrahedron_blocks_;
+  std::vector<std::vector<Global_id>> id_blocks_;
+  std::vector<std::vector<int>> label_blocks_;
   std::vector<Global_id> tet_gids_;
   std::size_t ghost_tetrahedra_ = 0;
   std::vector<std::vector<Index>> halo_send_;

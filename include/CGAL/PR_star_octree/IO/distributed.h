@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <map>
 #include <limits>
 #include <memory>
 #include <array>
@@ -82,7 +83,6 @@ inline Distributed_mesh_part read_on_rank_0_and_scatter(const std::string& file,
     tet_counts[r] = t.second - t.first;
   }
   part.first_vertex = block(sizes[0], me, p).first;
-  const std::uint64_t first_tet = block(sizes[1], me, p).first;
   {
     std::vector<std::array<double, 3>> xyz;
     if (me == 0) {
@@ -115,47 +115,37 @@ inline Distributed_mesh_part read_on_rank_0_and_scatter(const std::string& file,
     part.tetrahedra = scatter_blocks(comm, tets, tet_counts);
   }
   if (sizes[3]) part.tetrahedron_labels = scatter_blocks(comm, mesh.tetrahedron_labels, tet_counts);
-  part.tetrahedron_ids.resize(part.tetrahedra.size());
-  for (std::size_t t = 0; t < part.tetrahedra.size(); ++t) part.tetrahedron_ids[t] = first_tet + t;
   if (me == 0) part.skipped_cells = mesh.skipped_cells;
   return part;
 }
 
-// Each rank reads its own byte ranges of an appended-raw .vtu: the blocks of points and of cells.
-inline Distributed_mesh_part read_vtu_ranges(const std::string& file, const Vtu_range_reader& reader,
-                                             MPI_Comm comm) {
+// Each rank reads its own byte ranges of an appended-raw .vtu: its block of points now, its block of
+// cells later, in blocks, when the octree's construction asks for them (deferred tetrahedra).
+inline Distributed_mesh_part read_vtu_ranges(std::shared_ptr<const Vtu_range_reader> reader, MPI_Comm comm) {
   using namespace PR_star_octree::internal;
   const int p = mpi_size(comm), me = mpi_rank(comm);
   Distributed_mesh_part part;
-  const auto vb = block(reader.number_of_points(), me, p), cb = block(reader.number_of_cells(), me, p);
+  const auto vb = block(reader->number_of_points(), me, p), cb = block(reader->number_of_cells(), me, p);
   part.first_vertex = vb.first;
-  part.point_array_names = reader.point_array_names();
-  std::vector<std::uint64_t> tets;
-  std::vector<std::uint64_t> cell_ids;
+  part.point_array_names = reader->point_array_names();
   run_collectively(comm, [&] {
     part.point_arrays.resize(part.point_array_names.size());
-    reader.read_points(vb.first, vb.second, part.coordinates, part.point_arrays);
-    reader.read_cells(cb.first, cb.second, tets, cell_ids,
-                      reader.has_labels() ? &part.tetrahedron_labels : nullptr, part.skipped_cells);
+    reader->read_points(vb.first, vb.second, part.coordinates, part.point_arrays);
   });
-  if (reader.has_labels()) part.label_name = reader.label_array_name();
-  // as the whole-file reader: cells, but no tetrahedron among them, is an error
-  std::uint64_t tets_here = cell_ids.size(), all_tets = 0;
-  MPI_Allreduce(&tets_here, &all_tets, 1, MPI_UINT64_T, MPI_SUM, comm);
-  if (all_tets == 0 && reader.number_of_cells() > 0)
-    agree_on_errors(comm, file + ": no tetrahedron among the " + std::to_string(reader.number_of_cells()) +
-                              " cells (only tetrahedra, VTK type 10, are read)");
-  // the tetrahedra's ids: their index among the file's tetrahedra
-  const std::uint64_t n = cell_ids.size();
-  std::uint64_t first = 0;
-  MPI_Exscan(&n, &first, 1, MPI_UINT64_T, MPI_SUM, comm);
-  if (me == 0) first = 0;
-  part.tetrahedra.resize(n);
-  part.tetrahedron_ids.resize(n);
-  for (std::size_t t = 0; t < n; ++t) {
-    for (int i = 0; i < 4; ++i) part.tetrahedra[t][i] = tets[4 * t + i];
-    part.tetrahedron_ids[t] = first + t;
-  }
+  if (reader->has_labels()) part.label_name = reader->label_array_name();
+  constexpr std::uint64_t cells_per_block = std::uint64_t(1) << 20;
+  part.tetrahedron_blocks = std::size_t((cb.second - cb.first + cells_per_block - 1) / cells_per_block);
+  part.deferred_labels = reader->has_labels();
+  part.read_tetrahedra = [reader, cb](std::size_t k, std::vector<std::array<std::uint64_t, 4>>& tetrahedra,
+                                      std::vector<int>& labels) {
+    const std::uint64_t b = cb.first + k * cells_per_block, e = (std::min)(cb.second, b + cells_per_block);
+    std::vector<std::uint64_t> flat, cell_ids;
+    std::map<std::string, std::size_t> skipped;
+    reader->read_cells(b, e, flat, cell_ids, reader->has_labels() ? &labels : nullptr, skipped);
+    tetrahedra.resize(cell_ids.size());
+    for (std::size_t t = 0; t < cell_ids.size(); ++t)
+      for (int i = 0; i < 4; ++i) tetrahedra[t][i] = flat[4 * t + i];
+  };
   return part;
 }
 
@@ -186,10 +176,10 @@ Distributed_mesh_part read_mesh_part(const std::string& file, const NP& np = par
   std::string ext = file.size() >= 4 ? file.substr(file.size() - 4) : std::string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (ext == ".vtu") {
-    std::unique_ptr<internal::Vtu_range_reader> reader;
+    std::shared_ptr<internal::Vtu_range_reader> reader;
     PR_star_octree::internal::run_collectively(
-        comm, [&] { reader = std::make_unique<internal::Vtu_range_reader>(file); });
-    if (reader->ranges_supported()) return internal::read_vtu_ranges(file, *reader, comm);
+        comm, [&] { reader = std::make_shared<internal::Vtu_range_reader>(file); });
+    if (reader->ranges_supported()) return internal::read_vtu_ranges(reader, comm);
   }
   return internal::read_on_rank_0_and_scatter(file, comm);
 }
