@@ -17,6 +17,7 @@
 #include <CGAL/PR_star_octree/Distributed_octree_3.h>
 #include <CGAL/PR_star_octree/IO.h>
 #include <CGAL/PR_star_octree/IO/distributed.h>
+#include <CGAL/PR_star_octree/IO/internal/pvtu_writer.h>
 #include <CGAL/PR_star_octree/boundary.h>
 #include <CGAL/PR_star_octree/distortion.h>
 #include <CGAL/PR_star_octree/distributed_algorithms.h>
@@ -315,6 +316,85 @@ void test_files(const std::vector<std::string>& paths) {
   }
 }
 
+// A .pvtu read back: (a) written by write_pvtu (ghost cells, global ids: the vertices keep their
+// ids, everything is compared), (b) pieces without ghosts or global ids, cut by hand (the copies of
+// the shared points merged by coordinates: the counts are compared).
+void test_pvtu() {
+  namespace fs = std::filesystem;
+  const int n = 5;
+  const Mesh m = lattice(n, [n](int i, int j, int k) { return jittered(i, j, k, n); });
+  const std::string folder = "distributed_pvtu_" + std::to_string(ranks_);
+  if (rank_ == 0) fs::create_directories(folder);
+  MPI_Barrier(MPI_COMM_WORLD);
+  {
+    const std::string file = folder + "/written.pvtu";
+    {
+      const Distributed d(part_of(m), params::bucket_size(8));
+      PRS::IO::write_pvtu(file, d, {});
+    }
+    compare("a .pvtu with ghosts and global ids", m, PRS::IO::read_mesh_part(file), 8);
+  }
+  for (int pieces : {1, 3, 5}) {
+    const std::string file = folder + "/cut_" + std::to_string(pieces) + ".pvtu";
+    if (rank_ == 0) {
+      std::vector<std::string> names;
+      for (int k = 0; k < pieces; ++k) {
+        // the tetrahedra of piece k and their vertices, numbered in the piece
+        std::vector<std::int64_t> local(m.points.size(), -1);
+        std::vector<double> xyz, f;
+        std::vector<std::uint32_t> tets;
+        std::vector<int> labels;
+        for (std::size_t t = k; t < m.tetrahedra.size(); t += std::size_t(pieces)) {
+          for (auto v : m.tetrahedra[t]) {
+            if (local[v] < 0) {
+              local[v] = std::int64_t(xyz.size() / 3);
+              xyz.insert(xyz.end(), {m.points[v].x(), m.points[v].y(), m.points[v].z()});
+              f.push_back(m.point_data[0].values[v]);
+            }
+            tets.push_back(std::uint32_t(local[v]));
+          }
+          labels.push_back(m.tetrahedron_labels[t]);
+        }
+        PRS::IO::internal::Vtu_piece piece;
+        piece.xyz = xyz.data();
+        piece.number_of_points = xyz.size() / 3;
+        piece.tetrahedra = tets.data();
+        piece.number_of_tetrahedra = tets.size() / 4;
+        piece.labels = labels.data();
+        piece.point_arrays = {{"f", f.data()}};
+        names.push_back("cut_" + std::to_string(pieces) + "_" + std::to_string(k) + ".vtu");
+        PRS::IO::internal::write_vtu_piece(folder + "/" + names.back(), piece);
+        if (k + 1 == pieces) PRS::IO::internal::write_pvtu(file, names, piece);
+      }
+    }
+    MPI_Barrier(MPI_COMM_WORLD);
+    prstar_test::Failure_context context(file + " on " + std::to_string(ranks_) + " ranks");
+    const Octree one(PRS::make_input(m), params::bucket_size(8));
+    const Distributed d(PRS::IO::read_mesh_part(file), params::bucket_size(8));
+    CHECK_EQUAL(d.number_of_vertices(), m.points.size()); // the copies merged
+    CHECK_EQUAL(d.number_of_tetrahedra(), m.tetrahedra.size());
+    const PRS::Simplex_counts c1 = PRS::count_simplices(one), cd = PRS::count_simplices(d);
+    CHECK_EQUAL(cd.edges, c1.edges);
+    CHECK_EQUAL(cd.triangles, c1.triangles);
+    CHECK_EQUAL(cd.boundary_triangles, c1.boundary_triangles);
+    CHECK_EQUAL(cd.euler_characteristic(), c1.euler_characteristic());
+    std::vector<PRS::Vertex_type> types(d.number_of_owned_vertices());
+    CHECK_EQUAL(PRS::compute_boundary(d, CGAL::make_property_map(types)).boundary_vertices,
+                PRS::compute_boundary(one, CGAL::Constant_property_map<std::size_t, PRS::Vertex_type>())
+                    .boundary_vertices);
+    CHECK_EQUAL(d.point_array_names().size(), 1u);
+    // each vertex's field value came with it: f = x^2 + y - z at its coordinates
+    std::size_t wrong = 0;
+    const auto& octree = d.local_octree();
+    for (Octree::Index v = 0; v < octree.number_of_vertices(); ++v) {
+      const auto q = octree.coordinates(octree.point(v));
+      wrong += d.point_array(0)[octree.original_vertex(v)] != q[0] * q[0] + q[1] - q[2];
+    }
+    CHECK_EQUAL(wrong, 0u);
+    CHECK(d.has_tetrahedron_labels());
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -325,6 +405,7 @@ int main(int argc, char** argv) {
   test_nonmanifold();
   test_tiny();
   test_bad_parts();
+  test_pvtu();
   test_files(std::vector<std::string>(argv + 1, argv + argc));
   // every rank's failures count; rank 0 reports
   long long failures = prstar_test::failures(), all = 0;

@@ -135,6 +135,10 @@ def compare_outputs(mesh, args, arrays, ranks):
         rg.Update()
         check(rg.GetOutput().GetNumberOfCells() == n_cells, pvtu + ": vtkRemoveGhosts")
 
+    # the .pvtu read back by the ranks (pieces merged by GlobalPointIds, ghost cells dropped): the
+    # same mesh as the input
+    same_summary(summary(["validate", mesh]), summary(["validate", pvtu], 2), f"validate {pvtu} on 2 ranks")
+
     # gathered into one file: the same arrays in the same order
     gathered = f"{stem}_{ranks}_gathered.vtu"
     p, _ = run([command, mesh, *options, "-o", gathered, "--force", "--quiet"], ranks)

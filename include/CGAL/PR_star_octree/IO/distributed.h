@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <limits>
@@ -149,6 +150,185 @@ inline Distributed_mesh_part read_vtu_ranges(std::shared_ptr<const Vtu_range_rea
   return part;
 }
 
+// A point of a .pvtu piece sent to the rank that merges its copies: by global id (`GlobalPointIds`)
+// or by exact coordinates.
+struct Piece_point {
+  double x, y, z;
+  std::uint64_t id;
+  std::uint64_t source; // its index on the rank that read it
+  bool same(const Piece_point& o, bool by_id) const {
+    return by_id ? id == o.id : (x == o.x && y == o.y && z == o.z);
+  }
+  static bool less(const Piece_point& a, const Piece_point& b, bool by_id) {
+    if (by_id) return a.id < b.id;
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    return a.z < b.z;
+  }
+};
+
+// A .pvtu: the ranks read its pieces (whole pieces, contiguous runs of them, any encoding), drop
+// the ghost cells (`vtkGhostType` & 1), and merge the copies of the points shared by pieces: by
+// `GlobalPointIds` when every piece has them (the merged vertices keep them as global ids when they
+// number the vertices 0 ... n-1), else by exact coordinates.  The merged vertices are numbered in
+// blocks, one per rank, as `Distributed_octree_3` takes them.
+inline Distributed_mesh_part read_pvtu(const std::string& file, MPI_Comm comm) {
+  using namespace PR_star_octree::internal;
+  const int p = mpi_size(comm), me = mpi_rank(comm);
+  std::vector<std::string> pieces;
+  run_collectively(comm, [&] { pieces = read_pvtu_piece_files(file); });
+  const std::size_t first_piece = pieces.size() * std::size_t(me) / std::size_t(p),
+                    last_piece = pieces.size() * std::size_t(me + 1) / std::size_t(p);
+  // this rank's pieces, concatenated
+  std::vector<Piece_point> points;
+  std::vector<std::vector<double>> arrays;
+  std::vector<std::string> names;
+  std::vector<std::array<std::uint64_t, 4>> tets; // in indices of `points`
+  std::vector<int> labels;
+  bool by_id = true, has_labels = false;
+  run_collectively(comm, [&] {
+    for (std::size_t k = first_piece; k < last_piece; ++k) {
+      Indexed_tetrahedral_mesh<> m;
+      read_tetrahedral_mesh(pieces[k], m);
+      const std::uint64_t base = points.size();
+      const Data_array* ids = nullptr;
+      std::vector<const Data_array*> kept;
+      std::vector<std::string> piece_names;
+      for (const Data_array& a : m.point_data) {
+        if (a.name == "GlobalPointIds")
+          ids = &a;
+        else if (a.name != "vtkGhostType") {
+          kept.push_back(&a);
+          piece_names.push_back(a.name);
+        }
+      }
+      if (k == first_piece) {
+        names = piece_names;
+        arrays.resize(names.size());
+        has_labels = !m.tetrahedron_labels.empty();
+      } else if (piece_names != names)
+        throw Read_error(pieces[k], 0, "its point arrays differ from those of " + pieces[first_piece]);
+      by_id = by_id && ids != nullptr;
+      for (std::size_t v = 0; v < m.points.size(); ++v) {
+        const auto& q = m.points[v];
+        const double id = ids ? ids->values[v] : 0.;
+        if (ids && !(id >= 0 && id < 9007199254740992.))
+          throw Read_error(pieces[k], 0, "GlobalPointIds of point " + std::to_string(v) + " is not an id");
+        points.push_back({q.x(), q.y(), q.z(), std::uint64_t(id), points.size()});
+      }
+      for (std::size_t a = 0; a < kept.size(); ++a)
+        arrays[a].insert(arrays[a].end(), kept[a]->values.begin(), kept[a]->values.end());
+      const Data_array* ghost = nullptr;
+      for (const Data_array& a : m.cell_data)
+        if (a.name == "vtkGhostType") ghost = &a;
+      for (std::size_t t = 0; t < m.tetrahedra.size(); ++t) {
+        if (ghost && (static_cast<unsigned>(ghost->values[t]) & 1u))
+          continue; // a copy of another piece's cell
+        const auto& c = m.tetrahedra[t];
+        tets.push_back({{base + c[0], base + c[1], base + c[2], base + c[3]}});
+        if (has_labels) labels.push_back(m.tetrahedron_labels.empty() ? 0 : m.tetrahedron_labels[t]);
+      }
+    }
+  });
+  // the same merge rule and names on every rank (a rank without a piece agrees with the others)
+  int local_by_id = (by_id || first_piece == last_piece) ? 1 : 0, all_by_id = 0;
+  MPI_Allreduce(&local_by_id, &all_by_id, 1, MPI_INT, MPI_MIN, comm);
+  by_id = all_by_id != 0 && !pieces.empty();
+  {
+    // the names and the labels of piece 0, from the rank that read it
+    int root = 0;
+    while (root + 1 < p && pieces.size() * std::size_t(root + 1) / std::size_t(p) == 0) ++root;
+    std::uint64_t n = names.size();
+    MPI_Bcast(&n, 1, MPI_UINT64_T, root, comm);
+    names.resize(n);
+    for (auto& name : names) {
+      std::uint64_t len = name.size();
+      MPI_Bcast(&len, 1, MPI_UINT64_T, root, comm);
+      name.resize(len);
+      MPI_Bcast(&name[0], checked_count(len), MPI_CHAR, root, comm);
+    }
+    int l = has_labels ? 1 : 0;
+    MPI_Bcast(&l, 1, MPI_INT, root, comm);
+    has_labels = l != 0;
+    if (first_piece == last_piece) arrays.assign(names.size(), {});
+  }
+  std::uint64_t local_max = 0, max_id = 0;
+  for (const auto& q : points) local_max = (std::max)(local_max, q.id);
+  MPI_Allreduce(&local_max, &max_id, 1, MPI_UINT64_T, MPI_MAX, comm);
+  // each point to the rank that merges its copies: by id range, or by a hash of the coordinates
+  auto destination = [&](const Piece_point& q) {
+    if (by_id) return int(q.id * std::uint64_t(p) / (max_id + 1));
+    std::uint64_t h = 1469598103934665603ULL;
+    for (double c : {q.x, q.y, q.z}) {
+      std::uint64_t b;
+      std::memcpy(&b, &c, sizeof b);
+      h = (h ^ b) * 1099511628211ULL;
+    }
+    return int(h % std::uint64_t(p));
+  };
+  const std::size_t na = names.size();
+  std::vector<Piece_point> received;
+  std::vector<double> received_values;
+  std::vector<std::size_t> from;
+  {
+    std::vector<std::vector<Piece_point>> send(p);
+    std::vector<std::vector<double>> send_values(p);
+    for (const auto& q : points) {
+      const int r = destination(q);
+      send[r].push_back(q);
+      for (std::size_t a = 0; a < na; ++a) send_values[r].push_back(arrays[a][q.source]);
+    }
+    received = all_to_all(comm, send, &from);
+    received_values = all_to_all(comm, send_values);
+  }
+  // merge: sort, number the distinct points in blocks of the ranks
+  std::vector<std::size_t> order(received.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return Piece_point::less(received[a], received[b], by_id); });
+  std::vector<std::uint64_t> merged(received.size());
+  Distributed_mesh_part part;
+  part.point_array_names = names;
+  part.point_arrays.assign(na, {});
+  std::uint64_t distinct = 0;
+  for (std::size_t k = 0; k < order.size(); ++k)
+    if (k == 0 || !received[order[k]].same(received[order[k - 1]], by_id)) ++distinct;
+  std::uint64_t first = 0;
+  MPI_Exscan(&distinct, &first, 1, MPI_UINT64_T, MPI_SUM, comm);
+  if (me == 0) first = 0;
+  part.first_vertex = first;
+  std::uint64_t next = first;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t i = order[k];
+    if (k == 0 || !received[i].same(received[order[k - 1]], by_id)) {
+      part.coordinates.insert(part.coordinates.end(), {received[i].x, received[i].y, received[i].z});
+      for (std::size_t a = 0; a < na; ++a) part.point_arrays[a].push_back(received_values[na * i + a]);
+      ++next;
+    }
+    merged[i] = next - 1;
+  }
+  // the merged ids back to the ranks that read the points, in the order they sent them
+  std::vector<std::vector<std::uint64_t>> reply(p);
+  {
+    std::size_t k = 0;
+    for (int r = 0; r < p; ++r)
+      for (std::size_t j = 0; j < from[r]; ++j, ++k) reply[r].push_back(merged[k]);
+  }
+  const std::vector<std::uint64_t> answers = all_to_all(comm, reply);
+  std::vector<std::uint64_t> id_of(points.size());
+  {
+    std::vector<std::size_t> position(p + 1, 0);
+    for (const auto& q : points) ++position[destination(q) + 1];
+    for (int r = 0; r < p; ++r) position[r + 1] += position[r];
+    for (const auto& q : points) id_of[q.source] = answers[position[destination(q)]++];
+  }
+  for (auto& c : tets)
+    for (auto& v : c) v = id_of[v];
+  part.tetrahedra = std::move(tets);
+  part.tetrahedron_labels = std::move(labels);
+  return part;
+}
+
 } // namespace internal
 
 /// \ingroup PkgPRStarOctreeDistributed
@@ -156,8 +336,12 @@ inline Distributed_mesh_part read_vtu_ranges(std::shared_ptr<const Vtu_range_rea
 /// file).  A `.vtu` whose arrays are appended raw binary (as `write_tetrahedral_mesh()` writes it
 /// with `compression(IO::Compression::none)`, and as VTK, ParaView and meshio write big meshes) is
 /// read in parallel: each rank reads only the byte ranges of its block of points and of cells.
-/// Any other file of the format table is read by rank 0 and its blocks sent to the ranks.  The
-/// tetrahedra keep their index among the file's tetrahedra as global id.
+/// A `.pvtu` (as ParaView, VTK or `write_pvtu()` write it: any number of pieces for any number of
+/// ranks) is read piece by piece by the ranks, each reading a contiguous run of pieces; the ghost
+/// cells (`vtkGhostType`) are dropped and the copies of the points shared by several pieces merged,
+/// by `GlobalPointIds` when the pieces have them, else by exact coordinates.  Any other file of the
+/// format table is read by rank 0 and its blocks sent to the ranks.  The tetrahedra keep their
+/// index among the file's tetrahedra (the pieces' in piece order) as global id.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{communicator}
@@ -175,6 +359,8 @@ Distributed_mesh_part read_mesh_part(const std::string& file, const NP& np = par
       parameters::get_parameter(np, PR_star_octree::internal_np::communicator), MPI_COMM_WORLD);
   std::string ext = file.size() >= 4 ? file.substr(file.size() - 4) : std::string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext == "pvtu" && file.size() >= 5 && file[file.size() - 5] == '.')
+    return internal::read_pvtu(file, comm);
   if (ext == ".vtu") {
     std::shared_ptr<internal::Vtu_range_reader> reader;
     PR_star_octree::internal::run_collectively(
