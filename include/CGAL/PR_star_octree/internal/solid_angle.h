@@ -35,17 +35,24 @@ inline double solid_angle_3(const std::array<double, 3>& a, const std::array<dou
 
 /// The solid angle at the origin of the cone spanned by three vectors of R^4, measured inside the
 /// 3-flat that holds them: the Van Oosterom-Strackee formula with `|det[a b c]|` replaced by the
-/// square root of the Gram determinant (computed with Eigen), which is intrinsic to the flat.
+/// 3-volume spanned by a, b, c (intrinsic to the flat).
 inline double solid_angle_4(const Eigen::Vector4d& a, const Eigen::Vector4d& b, const Eigen::Vector4d& c) {
-  Eigen::Matrix<double, 4, 3> m;
-  m.col(0) = a;
-  m.col(1) = b;
-  m.col(2) = c;
-  const Eigen::Matrix3d gram = m.transpose() * m;
-  const double g = gram.determinant();
-  const double volume = g > 0 ? std::sqrt(g) : 0.;
-  const double la = std::sqrt(gram(0, 0)), lb = std::sqrt(gram(1, 1)), lc = std::sqrt(gram(2, 2));
-  const double den = la * lb * lc + gram(0, 1) * lc + gram(0, 2) * lb + gram(1, 2) * la;
+  // The 3-volume of the parallelepiped spanned by a, b, c in R^4: the norm of their exterior
+  // product, whose coordinates are the four 3x3 minors of [a b c] (one row left out each).  This is
+  // far better conditioned than the square root of the Gram determinant (which squares the
+  // condition number): thin tetrahedra give the same angle, to rounding, whatever the vertex order.
+  auto minor = [&](int skip) {
+    int r[3], n = 0;
+    for (int i = 0; i < 4; ++i)
+      if (i != skip) r[n++] = i;
+    return a[r[0]] * (b[r[1]] * c[r[2]] - b[r[2]] * c[r[1]]) -
+           a[r[1]] * (b[r[0]] * c[r[2]] - b[r[2]] * c[r[0]]) +
+           a[r[2]] * (b[r[0]] * c[r[1]] - b[r[1]] * c[r[0]]);
+  };
+  const double m0 = minor(0), m1 = minor(1), m2 = minor(2), m3 = minor(3);
+  const double volume = std::sqrt(m0 * m0 + m1 * m1 + m2 * m2 + m3 * m3);
+  const double la = a.norm(), lb = b.norm(), lc = c.norm();
+  const double den = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
   return 2. * std::atan2(volume, den);
 }
 
