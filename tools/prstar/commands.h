@@ -39,7 +39,7 @@ void report_statistics(Mesh mesh, const std::string& name, const std::vector<std
 /// whatever the order in which they are added, e.g. by several ranks).
 struct Distortion_summary {
   double min = std::numeric_limits<double>::infinity(), max = -std::numeric_limits<double>::infinity();
-  CGAL::PR_star_octree::internal::Fixed_point_sum<64> sum;
+  CGAL::PR_star_octree::internal::Fixed_point_sum sum;
   std::uint64_t count = 0;
   void add(double d) {
     min = std::min(min, d);

@@ -97,8 +97,8 @@ Octree_field_map<Octree> coordinate_field_map(const Octree& tree, int axis) {
 
 namespace internal {
 
-// The sums of the solid angles at a vertex: exact, whatever the order of the star (< 2^26).
-using Angle_sum = Fixed_point_sum<100>;
+// The sums of the solid angles at a vertex: the same bits whatever the order of the star.
+using Angle_sum = Fixed_point_sum;
 
 inline Vertex_curvature finish_curvature(double s3, double s4, Vertex_type type) {
   const double pi = 3.14159265358979323846;
@@ -159,10 +159,11 @@ double field_value(const Octree&, const Octree_field_map<Octree>& field, typenam
   return field.at_octree_vertex(v);
 }
 
-// The curvature of vertex `v` of the leaf of `local`.  The result does not depend on how the
-// vertices and the tetrahedra are numbered (a distributed run numbers them otherwise and must give
-// the same bits): each corner's angles are computed with the other three vertices in a canonical
-// order, and added exactly (`Fixed_point_sum`), then rounded once.
+// The curvature of vertex `v` of the leaf of `local`.  The result does not depend on the order of
+// the star (a distributed run numbers the tetrahedra otherwise and must give the same bits): the
+// corners' angles are added in fixed point (`Fixed_point_sum`), then rounded once.  (Each corner's
+// angles are computed with the tetrahedron's vertices in the order the octree keeps, the input's
+// order made positive, on every rank.)
 template <class Octree, class FieldMap>
 Vertex_curvature vertex_curvature(const Leaf_topology<Octree>& local, const FieldMap& field,
                                   Vertex_classifier<Octree>& classifier, typename Octree::Index v) {
@@ -178,7 +179,7 @@ Vertex_curvature vertex_curvature(const Leaf_topology<Octree>& local, const Fiel
       f[i] = field_value(tree, field, c[i]);
       if (c[i] == v) k = i;
     }
-    const auto a = canonical_corner_solid_angles(p, f, k);
+    const auto a = corner_solid_angles(p, f, k);
     s3.add(a.first);
     s4.add(a.second);
   }
@@ -273,7 +274,7 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
           }
           for (int k = 0; k < 4; ++k) {
             if (l[k] >= nv) continue;
-            const auto a = internal::canonical_corner_solid_angles(p, f, k);
+            const auto a = internal::corner_solid_angles(p, f, k);
             s3[l[k]].add(a.first);
             s4[l[k]].add(a.second);
           }

@@ -72,25 +72,6 @@ inline std::pair<double, double> corner_solid_angles(const std::array<std::array
   return {solid_angle_3(e[0], e[1], e[2]), solid_angle_4(l[0], l[1], l[2])};
 }
 
-// The same with the three other vertices taken in the lexicographic order of (x, y, z, f): the
-// result does not depend on how the tetrahedron lists its vertices.
-inline std::pair<double, double> canonical_corner_solid_angles(const std::array<std::array<double, 3>, 4>& p,
-                                                               const std::array<double, 4>& f, int k) {
-  int o[3], n = 0;
-  for (int i = 0; i < 4; ++i)
-    if (i != k) o[n++] = i;
-  auto less = [&](int a, int b) {
-    if (p[a] != p[b]) return p[a] < p[b];
-    return f[a] < f[b];
-  };
-  if (less(o[1], o[0])) std::swap(o[0], o[1]);
-  if (less(o[2], o[1])) std::swap(o[1], o[2]);
-  if (less(o[1], o[0])) std::swap(o[0], o[1]);
-  const std::array<std::array<double, 3>, 4> q{{p[k], p[o[0]], p[o[1]], p[o[2]]}};
-  const std::array<double, 4> g{{f[k], f[o[0]], f[o[1]], f[o[2]]}};
-  return corner_solid_angles(q, g, 0);
-}
-
 } // namespace internal
 } // namespace PR_star_octree
 } // namespace CGAL
