@@ -450,12 +450,25 @@ private:
                 [](const Weighted_sample& a, const Weighted_sample& b) { return a.record < b.record; });
       double total = 0;
       for (const auto& s : all) total += s.weight;
+      // A splitter falls on the sample where the cumulative weight passes k/p of the total; it is
+      // then moved down to the start of the coarsest octree cell (Morton prefix) that begins after
+      // the previous sample, so that each rank gets whole subtrees, at the cost of at most one
+      // sample's weight.
       double cumulative = 0;
       int k = 1;
-      for (const auto& s : all) {
-        cumulative += s.weight;
+      for (std::size_t j = 0; j < all.size(); ++j) {
+        cumulative += all[j].weight;
         while (k < size_ && cumulative >= total * double(k) / double(size_)) {
-          splitters.push_back(s.record);
+          const std::uint64_t key = all[j].record.key, previous = j ? all[j - 1].record.key : 0;
+          std::uint64_t snapped = key;
+          for (int level = 21; level > 0; --level) {
+            const std::uint64_t cell = key & ~((std::uint64_t(1) << (3 * level)) - 1);
+            if (cell > previous || (j == 0 && cell == 0)) {
+              snapped = cell;
+              break;
+            }
+          }
+          splitters.push_back(snapped == key ? all[j].record : Morton_record{snapped, 0});
           ++k;
         }
       }
