@@ -69,18 +69,32 @@ struct Weighted_sample {
 };
 
 // A tetrahedron sent to the owners of its vertices.
+// A vertex's owner and its index there (the directory's answer).
+struct Owner_index {
+  std::int32_t owner;
+  std::uint32_t index;
+};
+
+// A tetrahedron sent to the owners of its vertices: each corner with its global id, its owner and
+// its index on its owner (so that no rank has to look an id up).
 struct Tetrahedron_record {
   std::array<std::uint64_t, 4> vertices;
   std::uint64_t id;
-  std::array<std::int32_t, 4> owners;
+  std::array<Owner_index, 4> corners;
   std::int32_t label;
+  std::int32_t unused;
+};
+
+struct Id_index {
+  std::uint64_t id;
+  std::uint32_t index;
   std::int32_t unused;
 };
 
 struct Id_owner {
   std::uint64_t id;
   std::int32_t owner;
-  std::int32_t unused;
+  std::uint32_t index; // on the owner
 };
 
 } // namespace internal
@@ -301,7 +315,7 @@ private:
   // any rank is raised on every rank before `f` runs.
   template <class F>
   void for_each_block(Distributed_mesh_part& part, F f) {
-    constexpr std::size_t block = std::size_t(1) << 20;
+    constexpr std::size_t block = std::size_t(1) << 18; // the transient buffers of a round: ~25 MB
     const bool deferred = static_cast<bool>(part.read_tetrahedra);
     const std::size_t mine =
         deferred ? part.tetrahedron_blocks : (part.tetrahedra.size() + block - 1) / block;
@@ -399,6 +413,7 @@ private:
     // vertices (each corner to the rank whose input block has it).
     std::vector<std::uint32_t> star(nv, 0);
     std::uint64_t part_tetrahedra = 0;
+    Exchanger<Global_id> corners(size_); // the buffers of the rounds, kept from round to round
     for_each_block(part, [&](const std::vector<std::array<Global_id, 4>>& tets, const std::vector<int>&,
                              std::size_t first) {
       std::string bad;
@@ -411,10 +426,9 @@ private:
             break;
           }
       agree_on_errors(comm_, bad);
-      std::vector<std::vector<Global_id>> send(size_);
       for (const auto& c : tets)
-        for (Global_id g : c) send[block_of(g)].push_back(g);
-      for (Global_id g : exchange(send)) ++star[g - part.first_vertex];
+        for (Global_id g : c) corners.to(block_of(g)).push_back(g);
+      for (Global_id g : corners.exchange(comm_, nullptr, &bytes_)) ++star[g - part.first_vertex];
       part_tetrahedra += tets.size();
     });
     global_tetrahedra_ = sum_in_rank_order<Global_id>(comm_, part_tetrahedra);
@@ -518,22 +532,24 @@ private:
     std::vector<Morton_record>().swap(mine);
     std::vector<double>().swap(values);
 
-    // The directory: each input block learns the owner of each of its vertices.
-    std::vector<std::int32_t> owner_of(nv, -1);
+    // The directory: each input block learns the owner of each of its vertices and its index there.
+    std::vector<Owner_index> owner_of(nv, Owner_index{-1, 0});
     {
-      std::vector<std::vector<Global_id>> send(size_);
-      for (Global_id g : gids_) send[block_of(g)].push_back(g);
+      std::vector<std::vector<Id_index>> send(size_);
+      for (std::size_t i = 0; i < owned_; ++i) send[block_of(gids_[i])].push_back({gids_[i], Index(i), 0});
       std::vector<std::size_t> from;
-      const std::vector<Global_id> received = exchange(send, &from);
+      const std::vector<Id_index> received = exchange(send, &from);
       std::size_t k = 0;
       for (int r = 0; r < size_; ++r)
-        for (std::size_t j = 0; j < from[r]; ++j, ++k) owner_of[received[k] - part.first_vertex] = r;
+        for (std::size_t j = 0; j < from[r]; ++j, ++k)
+          owner_of[received[k].id - part.first_vertex] = {r, received[k].index};
     }
-    // The owned vertices by global id, for the lookups of the arriving tetrahedra.
-    std::vector<std::pair<Global_id, Index>> by_id(owned_);
-    for (std::size_t i = 0; i < owned_; ++i) by_id[i] = {gids_[i], Index(i)};
-    std::sort(by_id.begin(), by_id.end());
     std::unordered_map<Global_id, Index> ghost_index; // global id -> ghost number
+    // the buffers of the rounds, kept from round to round
+    Exchanger<Owner_index> owners(size_);
+    Exchanger<Tetrahedron_record> routed(size_);
+    std::vector<Owner_index> corner_owner;
+    std::vector<std::size_t> from, next;
     std::vector<Id_owner> ghosts;
 
     // Pass 2 over the tetrahedra, block by block: ask the owners of the corners from the input
@@ -541,42 +557,38 @@ private:
     // what it receives at once in local indices (owned vertices, then ghosts as they come).
     for_each_block(part, [&](const std::vector<std::array<Global_id, 4>>& tets,
                              const std::vector<int>& labels, std::size_t first) {
-      std::vector<std::int32_t> corner_owner(4 * tets.size());
+      corner_owner.resize(4 * tets.size());
       {
-        std::vector<std::vector<Global_id>> ask(size_);
         for (const auto& c : tets)
-          for (Global_id g : c) ask[block_of(g)].push_back(g);
-        std::vector<std::size_t> from;
-        const std::vector<Global_id> asked = exchange(ask, &from);
-        std::vector<std::vector<std::int32_t>> answer(size_);
+          for (Global_id g : c) corners.to(block_of(g)).push_back(g);
+        const std::vector<Global_id>& asked = corners.exchange(comm_, &from, &bytes_);
         std::size_t k = 0;
         for (int r = 0; r < size_; ++r)
           for (std::size_t j = 0; j < from[r]; ++j, ++k)
-            answer[r].push_back(owner_of[asked[k] - part.first_vertex]);
-        const std::vector<std::int32_t> answers = exchange(answer);
+            owners.to(r).push_back(owner_of[asked[k] - part.first_vertex]);
+        const std::vector<Owner_index>& answers = owners.exchange(comm_, nullptr, &bytes_);
         // the answers come back grouped by input block, in the order asked
-        std::vector<std::size_t> next(size_ + 1, 0);
+        next.assign(size_ + 1, 0);
         for (const auto& c : tets)
           for (Global_id g : c) ++next[block_of(g) + 1];
         for (int r = 0; r < size_; ++r) next[r + 1] += next[r];
         for (std::size_t t = 0; t < tets.size(); ++t)
           for (int i = 0; i < 4; ++i) corner_owner[4 * t + i] = answers[next[block_of(tets[t][i])]++];
       }
-      std::vector<std::vector<Tetrahedron_record>> send(size_);
       for (std::size_t t = 0; t < tets.size(); ++t) {
         Tetrahedron_record rec;
         rec.vertices = tets[t];
         rec.id = first_tetrahedron + first + t;
         rec.label = labels.empty() ? 0 : labels[t];
         rec.unused = 0;
-        for (int i = 0; i < 4; ++i) rec.owners[i] = corner_owner[4 * t + i];
+        for (int i = 0; i < 4; ++i) rec.corners[i] = corner_owner[4 * t + i];
         for (int i = 0; i < 4; ++i) {
           bool first_time = true;
-          for (int j = 0; j < i; ++j) first_time = first_time && rec.owners[j] != rec.owners[i];
-          if (first_time) send[rec.owners[i]].push_back(rec);
+          for (int j = 0; j < i; ++j) first_time = first_time && rec.corners[j].owner != rec.corners[i].owner;
+          if (first_time) routed.to(rec.corners[i].owner).push_back(rec);
         }
       }
-      const std::vector<Tetrahedron_record> received = exchange(send);
+      const std::vector<Tetrahedron_record>& received = routed.exchange(comm_, nullptr, &bytes_);
       // one block per round, flattened once at the end (no reallocation of a growing vector)
       tetrahedron_blocks_.emplace_back();
       tetrahedron_blocks_.back().reserve(received.size());
@@ -586,19 +598,20 @@ private:
       for (const Tetrahedron_record& rec : received) {
         std::array<Index, 4> c;
         Global_id smallest = rec.vertices[0];
-        int owner = rec.owners[0];
+        int owner = rec.corners[0].owner;
         for (int i = 0; i < 4; ++i) {
           const Global_id g = rec.vertices[i];
-          if (rec.owners[i] == rank_) {
-            c[i] = std::lower_bound(by_id.begin(), by_id.end(), std::make_pair(g, Index(0)))->second;
+          if (rec.corners[i].owner == rank_) {
+            c[i] = rec.corners[i].index;
           } else {
             const auto it = ghost_index.emplace(g, Index(ghosts.size())).first;
-            if (it->second == ghosts.size()) ghosts.push_back({g, rec.owners[i], 0});
+            if (it->second == ghosts.size())
+              ghosts.push_back({g, rec.corners[i].owner, rec.corners[i].index});
             c[i] = Index(owned_) + it->second; // a ghost number for now
           }
           if (g < smallest) {
             smallest = g;
-            owner = rec.owners[i];
+            owner = rec.corners[i].owner;
           }
         }
         ghost_tetrahedra_ += owner != rank_;
@@ -607,12 +620,11 @@ private:
         if (has_labels_) label_blocks_.back().push_back(rec.label);
       }
     });
-    std::vector<std::int32_t>().swap(owner_of);
+    std::vector<Owner_index>().swap(owner_of);
     std::vector<std::array<Global_id, 4>>().swap(part.tetrahedra);
     std::vector<int>().swap(part.tetrahedron_labels);
     part.read_tetrahedra = nullptr;
     std::unordered_map<Global_id, Index>().swap(ghost_index);
-    std::vector<std::pair<Global_id, Index>>().swap(by_id);
 
     // The ghosts grouped by owner and sorted by id (the order of the ghost updates); their
     // coordinates and point values asked from their owners.
@@ -630,21 +642,17 @@ private:
     tet_gids_ = flatten(id_blocks_);
     std::vector<Index>().swap(ghost_rank);
     {
-      std::vector<std::pair<Global_id, Index>> owned_by_id(owned_);
-      for (std::size_t i = 0; i < owned_; ++i) owned_by_id[i] = {gids_[i], Index(i)};
-      std::sort(owned_by_id.begin(), owned_by_id.end());
-      std::vector<std::vector<Global_id>> ask(size_);
-      for (Index j : ghost_order) ask[ghosts[j].owner].push_back(ghosts[j].id);
+      // each ghost asked by its index on its owner
+      std::vector<std::vector<Index>> ask(size_);
+      for (Index j : ghost_order) ask[ghosts[j].owner].push_back(ghosts[j].index);
       std::vector<std::size_t> from;
-      const std::vector<Global_id> asked = exchange(ask, &from);
+      const std::vector<Index> asked = exchange(ask, &from);
       halo_send_.assign(size_, {});
       std::vector<std::vector<double>> answer(size_);
       std::size_t k = 0;
       for (int r = 0; r < size_; ++r)
         for (std::size_t j = 0; j < from[r]; ++j, ++k) {
-          const auto it =
-              std::lower_bound(owned_by_id.begin(), owned_by_id.end(), std::make_pair(asked[k], Index(0)));
-          const Index i = it->second; // the owner has it: the directory said so
+          const Index i = asked[k];
           halo_send_[r].push_back(i);
           for (int a = 0; a < 3; ++a) answer[r].push_back(coordinates_[3 * i + a]);
           for (std::size_t a = 0; a < na; ++a) answer[r].push_back(arrays_[a][i]);

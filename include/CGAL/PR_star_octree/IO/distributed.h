@@ -134,7 +134,7 @@ inline Distributed_mesh_part read_vtu_ranges(std::shared_ptr<const Vtu_range_rea
     reader->read_points(vb.first, vb.second, part.coordinates, part.point_arrays);
   });
   if (reader->has_labels()) part.label_name = reader->label_array_name();
-  constexpr std::uint64_t cells_per_block = std::uint64_t(1) << 20;
+  constexpr std::uint64_t cells_per_block = std::uint64_t(1) << 18; // as the construction's rounds
   part.tetrahedron_blocks = std::size_t((cb.second - cb.first + cells_per_block - 1) / cells_per_block);
   part.deferred_labels = reader->has_labels();
   part.read_tetrahedra = [reader, cb](std::size_t k, std::vector<std::array<std::uint64_t, 4>>& tetrahedra,

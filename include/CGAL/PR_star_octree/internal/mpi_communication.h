@@ -95,6 +95,53 @@ std::vector<T> all_to_all(MPI_Comm comm, std::vector<std::vector<T>>& send,
   return rbuf;
 }
 
+/// `all_to_all()` with buffers kept from one call to the next (their capacity), for exchanges
+/// repeated in rounds: no allocation, and no page faults, once the largest round has been seen.
+template <class T>
+class Exchanger {
+public:
+  explicit Exchanger(int ranks) : send_(std::size_t(ranks)) {}
+  /// the records for rank `r` of the next exchange
+  std::vector<T>& to(int r) { return send_[std::size_t(r)]; }
+  /// Sends what was put in `to()`, and returns the records received, grouped by source rank in
+  /// rank order (valid until the next call); `received_counts[i]`: how many came from rank i.
+  /// Adds the bytes sent to `*bytes`.
+  const std::vector<T>& exchange(MPI_Comm comm, std::vector<std::size_t>* received_counts = nullptr,
+                                 std::size_t* bytes = nullptr) {
+    const int p = int(send_.size());
+    sc_.resize(p);
+    rc_.resize(p);
+    sd_.resize(p);
+    rd_.resize(p);
+    for (int i = 0; i < p; ++i) sc_[i] = checked_count(send_[i].size());
+    MPI_Alltoall(sc_.data(), 1, MPI_INT, rc_.data(), 1, MPI_INT, comm);
+    std::size_t ns = 0, nr = 0;
+    for (int i = 0; i < p; ++i) {
+      sd_[i] = checked_count(ns);
+      rd_[i] = checked_count(nr);
+      ns += std::size_t(sc_[i]);
+      nr += std::size_t(rc_[i]);
+    }
+    sbuf_.clear();
+    for (auto& s : send_) {
+      sbuf_.insert(sbuf_.end(), s.begin(), s.end());
+      s.clear();
+    }
+    rbuf_.resize(nr);
+    MPI_Alltoallv(sbuf_.data(), sc_.data(), sd_.data(), type_.get(), rbuf_.data(), rc_.data(), rd_.data(),
+                  type_.get(), comm);
+    if (received_counts) received_counts->assign(rc_.begin(), rc_.end());
+    if (bytes) *bytes += ns * sizeof(T);
+    return rbuf_;
+  }
+
+private:
+  std::vector<std::vector<T>> send_;
+  std::vector<T> sbuf_, rbuf_;
+  std::vector<int> sc_, rc_, sd_, rd_;
+  Mpi_record_type<T> type_;
+};
+
 /// Every rank's `value`, in rank order, on every rank.
 template <class T>
 std::vector<T> all_gather(MPI_Comm comm, const T& value) {
