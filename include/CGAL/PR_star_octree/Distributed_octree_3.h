@@ -91,6 +91,48 @@ struct Id_index {
   std::int32_t unused;
 };
 
+// A vector in chunks of 2^22 items, which never reallocates (no transient second copy while it
+// grows) and whose big chunks (allocated alone, mapped by the system) are given back one by one
+// when it is moved into a flat vector.
+template <class T>
+class Chunked_vector {
+  static constexpr int shift = 22;
+  static constexpr std::size_t chunk = std::size_t(1) << shift;
+
+public:
+  void push_back(const T& x) {
+    if (chunks_.empty() || chunks_.back().size() == chunk) {
+      chunks_.emplace_back();
+      chunks_.back().reserve(chunk);
+    }
+    chunks_.back().push_back(x);
+    ++size_;
+  }
+  std::size_t size() const { return size_; }
+  const T& operator[](std::size_t i) const { return chunks_[i >> shift][i & (chunk - 1)]; }
+  template <class F>
+  void for_each(F f) {
+    for (auto& c : chunks_)
+      for (T& x : c) f(x);
+  }
+  // the items in one vector; each chunk freed once copied
+  std::vector<T> release() {
+    std::vector<T> r;
+    r.reserve(size_);
+    for (auto& c : chunks_) {
+      r.insert(r.end(), c.begin(), c.end());
+      std::vector<T>().swap(c);
+    }
+    chunks_.clear();
+    size_ = 0;
+    return r;
+  }
+
+private:
+  std::vector<std::vector<T>> chunks_;
+  std::size_t size_ = 0;
+};
+
 struct Id_owner {
   std::uint64_t id;
   std::int32_t owner;
@@ -220,7 +262,10 @@ public:
   /// the global id of vertex `v` of the local octree's numbering
   Global_id global_id(Index v) const { return gids_[local_->original_vertex(v)]; }
   /// the global id of tetrahedron `t` of the local octree's numbering
-  Global_id global_tetrahedron_id(Index t) const { return tet_gids_[local_->original_tetrahedron(t)]; }
+  Global_id global_tetrahedron_id(Index t) const {
+    const std::size_t i = local_->original_tetrahedron(t);
+    return short_tet_gids_ ? Global_id(tet_gids32_[i]) : tet_gids_[i];
+  }
   /// the local vertex (local octree numbering) of smallest global id among `vertices`
   template <class Range>
   Index smallest(const Range& vertices) const {
@@ -287,21 +332,6 @@ private:
   std::vector<T> exchange(std::vector<std::vector<T>>& send, std::vector<std::size_t>* counts = nullptr) {
     bytes_ += count_bytes(send);
     return internal::all_to_all(comm_, send, counts);
-  }
-
-  // The blocks one after the other, each freed once copied: the peak is the result plus a block.
-  template <class T>
-  static std::vector<T> flatten(std::vector<std::vector<T>>& blocks) {
-    std::size_t n = 0;
-    for (const auto& b : blocks) n += b.size();
-    std::vector<T> r;
-    r.reserve(n);
-    for (auto& b : blocks) {
-      r.insert(r.end(), b.begin(), b.end());
-      std::vector<T>().swap(b);
-    }
-    blocks.clear();
-    return r;
   }
 
   // The rank whose input block holds global vertex id g.
@@ -432,6 +462,7 @@ private:
       part_tetrahedra += tets.size();
     });
     global_tetrahedra_ = sum_in_rank_order<Global_id>(comm_, part_tetrahedra);
+    short_tet_gids_ = global_tetrahedra_ <= (std::numeric_limits<std::uint32_t>::max)();
     Global_id first_tetrahedron = 0;
     MPI_Exscan(&part_tetrahedra, &first_tetrahedron, 1, MPI_UINT64_T, MPI_SUM, comm_);
     if (rank_ == 0) first_tetrahedron = 0;
@@ -589,12 +620,6 @@ private:
         }
       }
       const std::vector<Tetrahedron_record>& received = routed.exchange(comm_, nullptr, &bytes_);
-      // one block per round, flattened once at the end (no reallocation of a growing vector)
-      tetrahedron_blocks_.emplace_back();
-      tetrahedron_blocks_.back().reserve(received.size());
-      id_blocks_.emplace_back();
-      id_blocks_.back().reserve(received.size());
-      label_blocks_.emplace_back();
       for (const Tetrahedron_record& rec : received) {
         std::array<Index, 4> c;
         Global_id smallest = rec.vertices[0];
@@ -615,9 +640,12 @@ private:
           }
         }
         ghost_tetrahedra_ += owner != rank_;
-        tetrahedron_blocks_.back().push_back(c);
-        id_blocks_.back().push_back(rec.id);
-        if (has_labels_) label_blocks_.back().push_back(rec.label);
+        received_tetrahedra_.push_back(c);
+        if (short_tet_gids_)
+          tet_gids32_.push_back(std::uint32_t(rec.id));
+        else
+          tet_gids_.push_back(rec.id);
+        if (has_labels_) received_labels_.push_back(rec.label);
       }
     });
     std::vector<Owner_index>().swap(owner_of);
@@ -635,11 +663,10 @@ private:
                                                 : ghosts[a].id < ghosts[b].id;
     });
     for (std::size_t j = 0; j < ghosts.size(); ++j) ghost_rank[ghost_order[j]] = Index(j);
-    for (auto& block : tetrahedron_blocks_)
-      for (auto& c : block)
-        for (Index& v : c)
-          if (v >= owned_) v = Index(owned_) + ghost_rank[v - owned_];
-    tet_gids_ = flatten(id_blocks_);
+    received_tetrahedra_.for_each([&](std::array<Index, 4>& c) {
+      for (Index& v : c)
+        if (v >= owned_) v = Index(owned_) + ghost_rank[v - owned_];
+    });
     std::vector<Index>().swap(ghost_rank);
     {
       // each ghost asked by its index on its owner
@@ -675,7 +702,7 @@ private:
     std::string error;
     try {
       if (gids_.size() > std::size_t((std::numeric_limits<Index>::max)()) ||
-          tet_gids_.size() > std::size_t((std::numeric_limits<Index>::max)()))
+          received_tetrahedra_.size() > std::size_t((std::numeric_limits<Index>::max)()))
         throw std::length_error("more than 2^32 vertices or tetrahedra on one rank: use more ranks");
       Mesh mesh;
       const std::size_t n = gids_.size();
@@ -683,8 +710,8 @@ private:
       for (std::size_t i = 0; i < n; ++i)
         mesh.points.emplace_back(coordinates_[3 * i], coordinates_[3 * i + 1], coordinates_[3 * i + 2]);
       std::vector<double>().swap(coordinates_);
-      mesh.tetrahedra = flatten(tetrahedron_blocks_);
-      mesh.tetrahedron_labels = flatten(label_blocks_);
+      mesh.tetrahedra = received_tetrahedra_.release();
+      mesh.tetrahedron_labels = received_labels_.release();
       if (!arrays_.empty()) mesh.point_data.push_back({array_names_[0], arrays_[0]});
       const auto local_np =
           parameters::bucket_size(
@@ -714,10 +741,12 @@ private:
   std::vector<double> coordinates_;
   std::vector<std::vector<double>> arrays_;
   // the tetrahedra received, one block per round, until the local octree takes them
-  std::vector<std::vector<std::array<Index, 4>>> tetrahedron_blocks_;
-  std::vector<std::vector<Global_id>> id_blocks_;
-  std::vector<std::vector<int>> label_blocks_;
-  std::vector<Global_id> tet_gids_;
+  internal::Chunked_vector<std::array<Index, 4>> received_tetrahedra_;
+  internal::Chunked_vector<int> received_labels_;
+  // the global ids of the rank's tetrahedra (by part index), in 32 bits when they fit
+  bool short_tet_gids_ = true;
+  internal::Chunked_vector<std::uint32_t> tet_gids32_;
+  internal::Chunked_vector<Global_id> tet_gids_;
   std::size_t ghost_tetrahedra_ = 0;
   std::vector<std::vector<Index>> halo_send_;
   std::unique_ptr<Octree> local_;
