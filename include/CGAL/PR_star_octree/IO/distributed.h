@@ -410,7 +410,6 @@ void write_pvtu(const std::string& file, const Distributed_octree_3<GT>& tree,
   std::vector<double> xyz(3 * n);
   std::vector<std::int64_t> gids(n), cell_ids(nt);
   std::vector<std::uint8_t> point_ghosts(n), cell_ghosts(nt);
-  std::vector<std::uint32_t> tets(4 * nt);
   std::vector<int> labels(tree.has_tetrahedron_labels() ? nt : 0);
   std::vector<std::vector<double>> arrays;
   for (Index v = 0; v < n; ++v) {
@@ -420,7 +419,6 @@ void write_pvtu(const std::string& file, const Distributed_octree_3<GT>& tree,
     point_ghosts[v] = tree.owns_vertex(v) ? 0 : internal::vtk_duplicate_point;
   }
   for (Index t = 0; t < nt; ++t) {
-    for (int i = 0; i < 4; ++i) tets[4 * t + i] = octree.tetrahedron(t)[i];
     cell_ids[t] = std::int64_t(tree.global_tetrahedron_id(t));
     cell_ghosts[t] = tree.counts_tetrahedron(t) ? 0 : internal::vtk_duplicate_cell;
     if (!labels.empty()) labels[t] = octree.tetrahedron_label(t);
@@ -444,7 +442,10 @@ void write_pvtu(const std::string& file, const Distributed_octree_3<GT>& tree,
   internal::Vtu_piece piece;
   piece.xyz = n ? xyz.data() : &no_double;
   piece.number_of_points = n;
-  piece.tetrahedra = tets.data();
+  // the octree's own array of tetrahedra (four 32-bit indices each, no copy)
+  static_assert(sizeof(typename Octree::Tetrahedron) == 4 * sizeof(std::uint32_t), "32-bit local indices");
+  static const std::uint32_t no_tetrahedron[4] = {0, 0, 0, 0};
+  piece.tetrahedra = nt ? octree.tetrahedra().front().data() : no_tetrahedron;
   piece.number_of_tetrahedra = nt;
   piece.point_ghosts = n ? point_ghosts.data() : &no_ghost;
   piece.cell_ghosts = nt ? cell_ghosts.data() : &no_ghost;
