@@ -396,23 +396,27 @@ Command& Command::run_distributed(Run f) {
   return *this;
 }
 
-int Command::execute_distributed(const Options& options) const {
+namespace {
+// --threads, in force while the returned object lives
+std::shared_ptr<void> thread_limit(const Options& options) {
 #ifdef CGAL_LINKED_WITH_TBB
-  std::unique_ptr<tbb::global_control> threads;
   if (options.threads() > 0)
-    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                    options.threads());
+    return std::make_shared<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                 options.threads());
+#else
+  (void)options;
 #endif
+  return nullptr;
+}
+} // namespace
+
+int Command::execute_distributed(const Options& options) const {
+  const auto threads = thread_limit(options);
   return run_distributed_(options);
 }
 
 int Command::execute(const Options& options) const {
-#ifdef CGAL_LINKED_WITH_TBB
-  std::unique_ptr<tbb::global_control> threads;
-  if (options.threads() > 0)
-    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                    options.threads());
-#endif
+  const auto threads = thread_limit(options);
   // A mesh is refused before it is read when it cannot fit: the limit leaves room for the octree
   // built on it (about a quarter more when it is built in place).
   const std::size_t available = CGAL::PR_star_octree::IO::Memory_limit::available();

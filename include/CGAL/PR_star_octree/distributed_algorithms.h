@@ -346,36 +346,7 @@ Validity_result check_validity(const Distributed_octree_3<GT>& tree,
   const std::vector<Triangle> all = internal::gather_vectors(tree.communicator(), boundary);
   std::vector<Triangle>().swap(boundary);
   std::uint64_t components = 0;
-  if (tree.rank() == 0) {
-    struct Edge_record {
-      std::uint64_t a, b;
-      std::uint64_t triangle;
-      bool operator<(const Edge_record& o) const {
-        return std::tie(a, b, triangle) < std::tie(o.a, o.b, o.triangle);
-      }
-    };
-    std::vector<Edge_record> edges;
-    edges.reserve(3 * all.size());
-    for (std::size_t f = 0; f < all.size(); ++f) {
-      const auto& t = all[f];
-      edges.push_back({t[0], t[1], f});
-      edges.push_back({t[1], t[2], f});
-      edges.push_back({t[0], t[2], f});
-    }
-    std::sort(edges.begin(), edges.end());
-    internal::Union_find uf;
-    uf.reset(all.size());
-    components = all.size();
-    internal::for_each_group(
-        edges.begin(), edges.end(),
-        [](const Edge_record& x, const Edge_record& y) { return x.a == y.a && x.b == y.b; },
-        [&](auto first, auto last) {
-          for (auto e = first + 1; e < last; ++e)
-            if (uf.unite(static_cast<std::uint32_t>(e->triangle),
-                         static_cast<std::uint32_t>(first->triangle)))
-              --components;
-        });
-  }
+  if (tree.rank() == 0) components = internal::count_boundary_components(all);
   MPI_Bcast(&components, 1, MPI_UINT64_T, 0, tree.communicator());
   r.boundary_components = components;
   r.valid =

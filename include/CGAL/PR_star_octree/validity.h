@@ -54,6 +54,44 @@ struct Validity_result {
   std::size_t boundary_components = 0;
 };
 
+namespace internal {
+
+// The connected components of a set of triangles (sorted vertex ids of any integer type) joined
+// through their shared edges: union-find on the triangles, grouped by edge.
+template <class Id>
+std::size_t count_boundary_components(const std::vector<std::array<Id, 3>>& triangles) {
+  struct Edge_record {
+    Id a, b;
+    std::uint32_t triangle;
+    bool operator<(const Edge_record& o) const {
+      return std::tie(a, b, triangle) < std::tie(o.a, o.b, o.triangle);
+    }
+  };
+  std::vector<Edge_record> edges;
+  edges.reserve(3 * triangles.size());
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    const auto& t = triangles[f]; // sorted vertices
+    const std::uint32_t id = static_cast<std::uint32_t>(f);
+    edges.push_back(Edge_record{t[0], t[1], id});
+    edges.push_back(Edge_record{t[1], t[2], id});
+    edges.push_back(Edge_record{t[0], t[2], id});
+  }
+  std::sort(edges.begin(), edges.end());
+  Union_find uf;
+  uf.reset(triangles.size());
+  std::size_t components = triangles.size();
+  for_each_group(
+      edges.begin(), edges.end(),
+      [](const Edge_record& x, const Edge_record& y) { return x.a == y.a && x.b == y.b; },
+      [&](auto first, auto last) {
+        for (auto e = first + 1; e < last; ++e)
+          if (uf.unite(e->triangle, first->triangle)) --components;
+      });
+  return components;
+}
+
+} // namespace internal
+
 /// \ingroup PkgPRStarOctreeRef
 /// Checks the mesh of `tree` leaf by leaf (see `Validity_result`).  Memory beyond the octree: the
 /// local structure of the largest leaf and the boundary triangles.
@@ -130,35 +168,7 @@ Validity_result check_validity(const PR_star_octree_3<GT, I>& tree,
       [&](std::size_t done, std::size_t) { report(leaves + done, 2 * leaves); });
   r.inverted = (std::min)(r.positive, r.negative);
 
-  // Boundary components: union-find on the boundary triangles, grouped by their shared edges.
-  struct Edge_record {
-    Index a, b;
-    std::uint32_t triangle;
-    bool operator<(const Edge_record& o) const {
-      return std::tie(a, b, triangle) < std::tie(o.a, o.b, o.triangle);
-    }
-  };
-  std::vector<Edge_record> edges;
-  edges.reserve(3 * boundary.size());
-  for (std::size_t f = 0; f < boundary.size(); ++f) {
-    const auto& t = boundary[f]; // sorted vertices
-    const std::uint32_t id = static_cast<std::uint32_t>(f);
-    edges.push_back(Edge_record{t[0], t[1], id});
-    edges.push_back(Edge_record{t[1], t[2], id});
-    edges.push_back(Edge_record{t[0], t[2], id});
-  }
-  std::sort(edges.begin(), edges.end());
-  internal::Union_find uf;
-  uf.reset(boundary.size());
-  std::size_t components = boundary.size();
-  internal::for_each_group(
-      edges.begin(), edges.end(),
-      [](const Edge_record& x, const Edge_record& y) { return x.a == y.a && x.b == y.b; },
-      [&](auto first, auto last) {
-        for (auto e = first + 1; e < last; ++e)
-          if (uf.unite(e->triangle, first->triangle)) --components;
-      });
-  r.boundary_components = components;
+  r.boundary_components = internal::count_boundary_components(boundary);
 
   r.valid =
       r.inverted == 0 && r.degenerate == 0 && r.nonmanifold_triangles == 0 && r.nonmanifold_vertices == 0;

@@ -64,37 +64,6 @@ inline int checked_count(std::size_t n) {
   return static_cast<int>(n);
 }
 
-/// Sends `send[i]` (the records for rank i, `send.size()` = the number of ranks) and returns
-/// the records received, grouped by source rank in rank order; `received_counts[i]` tells how many
-/// came from rank i.  The send buffers are released as soon as they are copied.
-template <class T>
-std::vector<T> all_to_all(MPI_Comm comm, std::vector<std::vector<T>>& send,
-                          std::vector<std::size_t>* received_counts = nullptr) {
-  const int p = mpi_size(comm);
-  std::vector<int> sc(p), rc(p), sd(p), rd(p);
-  for (int i = 0; i < p; ++i) sc[i] = checked_count(send[i].size());
-  MPI_Alltoall(sc.data(), 1, MPI_INT, rc.data(), 1, MPI_INT, comm);
-  std::size_t ns = 0, nr = 0;
-  for (int i = 0; i < p; ++i) {
-    sd[i] = checked_count(ns);
-    rd[i] = checked_count(nr);
-    ns += std::size_t(sc[i]);
-    nr += std::size_t(rc[i]);
-  }
-  std::vector<T> sbuf;
-  sbuf.reserve(ns);
-  for (auto& s : send) {
-    sbuf.insert(sbuf.end(), s.begin(), s.end());
-    std::vector<T>().swap(s);
-  }
-  std::vector<T> rbuf(nr);
-  const Mpi_record_type<T> type;
-  MPI_Alltoallv(sbuf.data(), sc.data(), sd.data(), type.get(), rbuf.data(), rc.data(), rd.data(), type.get(),
-                comm);
-  if (received_counts) received_counts->assign(rc.begin(), rc.end());
-  return rbuf;
-}
-
 /// `all_to_all()` with buffers kept from one call to the next (their capacity), for exchanges
 /// repeated in rounds: no allocation, and no page faults, once the largest round has been seen.
 template <class T>
@@ -134,6 +103,8 @@ public:
     if (bytes) *bytes += ns * sizeof(T);
     return rbuf_;
   }
+  /// the records of the last exchange, moved out
+  std::vector<T> take_received() { return std::move(rbuf_); }
 
 private:
   std::vector<std::vector<T>> send_;
@@ -141,6 +112,21 @@ private:
   std::vector<int> sc_, rc_, sd_, rd_;
   Mpi_record_type<T> type_;
 };
+
+/// Sends `send[i]` (the records for rank i, `send.size()` = the number of ranks) and returns
+/// the records received, grouped by source rank in rank order; `received_counts[i]` tells how many
+/// came from rank i.  The send buffers are released.
+template <class T>
+std::vector<T> all_to_all(MPI_Comm comm, std::vector<std::vector<T>>& send,
+                          std::vector<std::size_t>* received_counts = nullptr) {
+  Exchanger<T> exchanger(int(send.size()));
+  for (std::size_t r = 0; r < send.size(); ++r) {
+    exchanger.to(int(r)).swap(send[r]);
+    std::vector<T>().swap(send[r]);
+  }
+  exchanger.exchange(comm, received_counts);
+  return exchanger.take_received();
+}
 
 /// Every rank's `value`, in rank order, on every rank.
 template <class T>
