@@ -64,7 +64,8 @@ int main(int argc, char** argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   if (argc < 2) {
-    if (rank == 0) std::cerr << "usage: mpirun -np N bench_mpi MESH [--kv K] [--out OUT.pvtu] [--threads T]\n";
+    if (rank == 0)
+      std::cerr << "usage: mpirun -np N bench_mpi MESH [--kv K] [--out OUT.pvtu] [--threads T]\n";
     MPI_Finalize();
     return 2;
   }
@@ -88,11 +89,13 @@ int main(int argc, char** argv) {
     const auto now = std::chrono::steady_clock::now();
     const double s = std::chrono::duration<double>(now - clock).count();
     clock = now;
-    json << ", \"" << name << "_seconds\": " << s << ", \"" << name << "_peak_rss_mb\": " << per_rank(peak_rss_mb());
+    json << ", \"" << name << "_seconds\": " << s << ", \"" << name
+         << "_peak_rss_mb\": " << per_rank(peak_rss_mb());
   };
   int status = 0;
   try {
-    json << "{\"mesh\": \"" << file << "\", \"ranks\": " << ranks << ", \"threads\": " << threads << ", \"kv\": " << kv;
+    json << "{\"mesh\": \"" << file << "\", \"ranks\": " << ranks << ", \"threads\": " << threads
+         << ", \"kv\": " << kv;
     PRS::Distributed_mesh_part part = PRS::IO::read_mesh_part(file);
     phase("read");
     const Distributed tree(std::move(part), params::bucket_size(kv));
@@ -111,8 +114,10 @@ int main(int argc, char** argv) {
       phase("write");
     }
     const std::uint64_t local_tets = tree.local_octree().number_of_tetrahedra();
-    json << ", \"vertices\": " << tree.number_of_vertices() << ", \"tetrahedra\": " << tree.number_of_tetrahedra()
-         << ", \"boundary_vertices\": " << b.boundary_vertices << ", \"boundary_triangles\": " << b.boundary_triangles
+    json << ", \"vertices\": " << tree.number_of_vertices()
+         << ", \"tetrahedra\": " << tree.number_of_tetrahedra()
+         << ", \"boundary_vertices\": " << b.boundary_vertices
+         << ", \"boundary_triangles\": " << b.boundary_triangles
          << ", \"owned_vertices\": " << per_rank<std::uint64_t>(tree.number_of_owned_vertices())
          << ", \"ghost_vertices\": " << per_rank<std::uint64_t>(tree.number_of_ghost_vertices())
          << ", \"local_tetrahedra\": " << per_rank(local_tets)
