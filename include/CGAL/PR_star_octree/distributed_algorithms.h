@@ -93,14 +93,28 @@ struct Count_and_put {
   using reference = void;
   using category = boost::writable_property_map_tag;
   CurvatureMap* map;
-  std::uint64_t* counts;
+  Vertex_type_counts* counts;
   std::size_t owned;
   friend void put(const Count_and_put& m, std::size_t i, const Vertex_curvature& c) {
     if (i >= m.owned) return;
-    ++m.counts[static_cast<int>(c.type) < 4 ? static_cast<int>(c.type) : 3];
+    m.counts->add(c.type);
     put(*m.map, i, c);
   }
 };
+
+// The counts of every rank added up (collective).
+inline Vertex_type_counts sum_over_ranks(MPI_Comm comm, const Vertex_type_counts& c) {
+  std::uint64_t local[4] = {c.interior_vertices, c.boundary_vertices, c.nonmanifold_vertices,
+                            c.unreferenced_vertices},
+                global[4];
+  MPI_Allreduce(local, global, 4, MPI_UINT64_T, MPI_SUM, comm);
+  Vertex_type_counts r;
+  r.interior_vertices = global[0];
+  r.boundary_vertices = global[1];
+  r.nonmanifold_vertices = global[2];
+  r.unreferenced_vertices = global[3];
+  return r;
+}
 
 } // namespace internal
 
@@ -210,16 +224,13 @@ Boundary_counts compute_boundary(const Distributed_octree_3<GT>& tree, VertexTyp
   // once by its own owner.
   std::vector<std::uint64_t> marked = internal::all_to_all(tree.communicator(), marks);
   std::sort(marked.begin(), marked.end());
-  std::uint64_t local[7] = {0,
-                            0,
-                            0,
-                            0,
-                            boundary_triangles,
-                            0,
+  // boundary triangles, tetrahedra touching the boundary, tetrahedra with a boundary face
+  std::uint64_t local[3] = {boundary_triangles, 0,
                             std::uint64_t(std::unique(marked.begin(), marked.end()) - marked.begin())};
+  Vertex_type_counts owned;
   for (std::size_t i = 0; i < tree.number_of_owned_vertices(); ++i) {
     const Vertex_type t = static_cast<Vertex_type>(types[i]);
-    ++local[static_cast<int>(t) < 4 ? static_cast<int>(t) : 3];
+    owned.add(t);
     put(vertex_type_map, i, t);
   }
   for (Index t = 0; t < octree.number_of_tetrahedra(); ++t) {
@@ -229,18 +240,15 @@ Boundary_counts compute_boundary(const Distributed_octree_3<GT>& tree, VertexTyp
       const auto type = static_cast<Vertex_type>(types[octree.original_vertex(v)]);
       touches = touches || type == Vertex_type::BOUNDARY || type == Vertex_type::NONMANIFOLD;
     }
-    local[5] += touches;
+    local[1] += touches;
   }
-  std::uint64_t global[7];
-  MPI_Allreduce(local, global, 7, MPI_UINT64_T, MPI_SUM, tree.communicator());
+  std::uint64_t global[3];
+  MPI_Allreduce(local, global, 3, MPI_UINT64_T, MPI_SUM, tree.communicator());
   Boundary_counts r;
-  r.interior_vertices = global[static_cast<int>(Vertex_type::INTERIOR)];
-  r.boundary_vertices = global[static_cast<int>(Vertex_type::BOUNDARY)];
-  r.nonmanifold_vertices = global[static_cast<int>(Vertex_type::NONMANIFOLD)];
-  r.unreferenced_vertices = global[static_cast<int>(Vertex_type::UNREFERENCED)];
-  r.boundary_triangles = global[4];
-  r.boundary_tetrahedra = global[5];
-  r.boundary_face_tetrahedra = global[6];
+  static_cast<Vertex_type_counts&>(r) = internal::sum_over_ranks(tree.communicator(), owned);
+  r.boundary_triangles = global[0];
+  r.boundary_tetrahedra = global[1];
+  r.boundary_face_tetrahedra = global[2];
   return r;
 }
 
@@ -256,17 +264,11 @@ template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, clas
 Vertex_type_counts compute_curvature(const Distributed_octree_3<GT>& tree, const FieldMap& field,
                                      CurvatureMap curvature_map,
                                      const NP& np = parameters::default_values()) {
-  std::uint64_t local[4] = {0, 0, 0, 0}, global[4];
+  Vertex_type_counts owned;
   compute_curvature<ConcurrencyTag>(
       tree.local_octree(), field,
-      internal::Count_and_put<CurvatureMap>{&curvature_map, local, tree.number_of_owned_vertices()}, np);
-  MPI_Allreduce(local, global, 4, MPI_UINT64_T, MPI_SUM, tree.communicator());
-  Vertex_type_counts r;
-  r.interior_vertices = global[static_cast<int>(Vertex_type::INTERIOR)];
-  r.boundary_vertices = global[static_cast<int>(Vertex_type::BOUNDARY)];
-  r.nonmanifold_vertices = global[static_cast<int>(Vertex_type::NONMANIFOLD)];
-  r.unreferenced_vertices = global[static_cast<int>(Vertex_type::UNREFERENCED)];
-  return r;
+      internal::Count_and_put<CurvatureMap>{&curvature_map, &owned, tree.number_of_owned_vertices()}, np);
+  return internal::sum_over_ranks(tree.communicator(), owned);
 }
 
 /// \ingroup PkgPRStarOctreeDistributed
