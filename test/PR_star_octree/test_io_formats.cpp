@@ -125,8 +125,8 @@ static void test_table() {
   CHECK(IO::find_mesh_format<Mesh>("x.ply") == nullptr && IO::find_mesh_format<Mesh>("vtu") == nullptr &&
         IO::find_mesh_format<Mesh>("dir.vtu/file") == nullptr);
   CHECK_EQUAL(IO::mesh_format_extensions(),
-              std::string(".vtu, .vtk, .node/.ele, .mesh, .meshb, .msh, .off/.ts"));
-  CHECK_EQUAL(IO::mesh_format_extensions(true), std::string(".vtu, .vtk, .node/.ele"));
+              std::string(".vtu, .vtk, .node/.ele, .mesh, .meshb, .msh, .off/.ts, .xdmf"));
+  CHECK_EQUAL(IO::mesh_format_extensions(true), std::string(".vtu, .vtk, .node/.ele, .xdmf"));
   // the fuzz regression inputs are kept per format key (replayed by test_fuzz_regressions)
   const fs::path root = PRSTAR_FUZZ_REGRESSIONS;
   if (fs::is_directory(root)) {
@@ -184,7 +184,10 @@ static void test_write_options() {
     // binary or text: what is possible works, the rest is refused
     for (const bool binary : {false, true}) {
       const bool possible = binary ? s.binary : s.ascii;
-      if (possible) {
+      if (possible && binary && std::string(f.key) == "xdmf" && !IO::xdmf_has_hdf5()) {
+        CHECK_THROWS(IO::Write_error, "no HDF5 support",
+                     IO::write_tetrahedral_mesh(file, m, CGAL::parameters::use_binary_mode(binary)));
+      } else if (possible) {
         IO::write_tetrahedral_mesh(file, m, CGAL::parameters::use_binary_mode(binary));
         Mesh r;
         f.read_file(file, r);

@@ -22,6 +22,7 @@
 #include <CGAL/PR_star_octree/IO/tetgen.h>
 #include <CGAL/PR_star_octree/IO/vtk.h>
 #include <CGAL/PR_star_octree/IO/vtu.h>
+#include <CGAL/PR_star_octree/IO/xdmf.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
 #include <cstddef>
@@ -178,6 +179,20 @@ inline constexpr Mesh_format<Mesh> mesh_formats[] = {
      &read_tet_off<Mesh>,
      [](std::istream& in, Mesh& m, const std::string& n) { read_tet_off(in, m, n); },
      &internal::write_tet_off_file<Mesh>},
+    {"XDMF",
+     {"xdmf", nullptr},
+     "xdmf",
+     "yes (2, 3; the first grid; `Tetrahedron`, `Mixed`)",
+     "yes (3.0; heavy data in `<stem>.h5`, or inline XML)",
+     "integer `Cell` attribute named as in `.vtk`, or `name_to_read`",
+     "`Node` scalar attributes",
+     Point_data_kept::all_arrays,
+     "`Cell` scalar attributes",
+     "inline XML; HDF5 datasets of float32/64, int32/64, uint32/64 (when the build has HDF5)",
+     &internal::xdmf_write_support,
+     [](const std::string& f, Mesh& m) { read_xdmf(f, m); },
+     [](std::istream& in, Mesh& m, const std::string& n) { read_xdmf(in, m, n); },
+     &internal::write_xdmf_file<Mesh>},
 };
 
 /// \ingroup PkgPRStarOctreeIO
