@@ -105,8 +105,9 @@ def check_geometry(what, ex, points, triangles, exact):
           "%s: the outer triangles bound a volume %r, expected %r (outward)" % (what, volume, ex.volume))
 
 
-def check_stl(what, ex, points, triangles, normals=None):
-    """STL readers merge the points: the triangles compared through their coordinates (float32)."""
+def check_stl(what, ex, points, triangles, normals=None, exact=False):
+    """STL readers merge the points: the triangles compared through their coordinates (float32,
+    or bit for bit when `exact`)."""
     points = np.asarray(points, dtype=np.float64)
     triangles = np.asarray(triangles, dtype=np.int64)
     check(triangles.shape == ex.triangles.shape,
@@ -115,8 +116,10 @@ def check_stl(what, ex, points, triangles, normals=None):
         return
     check(len(points) == len(ex.points), "%s: %d points after merging, expected %d" % (what, len(points), len(ex.points)))
     for k in range(3):
-        got = points[triangles[:, k]].astype(np.float32)
-        check(np.array_equal(got, ex.corner(k).astype(np.float32)),
+        got, expected = points[triangles[:, k]], ex.corner(k)
+        same = same_bits(got, expected) if exact else np.array_equal(got.astype(np.float32),
+                                                                      expected.astype(np.float32))
+        check(same,
               "%s: corner %d of the triangles differs (order, orientation or coordinates)" % (what, k))
     if normals is not None:
         normals = np.asarray(normals, dtype=np.float64)
@@ -207,6 +210,18 @@ def check_with_vtk(folder, ex):
         poly = vtk_read(vtk.vtkSTLReader, os.path.join(folder, name))
         check_stl(what, ex, vtk_points(poly), vtk_triangles(poly, what))
 
+    for name in ["empty.vtp", "empty_binary.vtp", "empty.ply", "empty_binary.ply", "empty.stl", "empty_binary.stl"]:
+        path = os.path.join(folder, name)
+        if not os.path.exists(path):
+            check(False, "%s: missing" % path)
+            continue
+        reader = {"vtp": vtk.vtkXMLPolyDataReader, "ply": vtk.vtkPLYReader, "stl": vtk.vtkSTLReader}[name[-3:]]
+        if name.endswith(".stl"):  # VTK tells binary from ASCII by the size: it fails on an empty binary one
+            check(os.path.getsize(path) == 84, "%s: %d bytes" % (path, os.path.getsize(path)))
+            continue
+        poly = vtk_read(reader, path)
+        check(poly.GetNumberOfPoints() == 0 and poly.GetNumberOfCells() == 0, "VTK %s: not empty" % name)
+
     what = "VTK box.obj"
     poly = vtk_read(vtk.vtkOBJReader, os.path.join(folder, "box.obj"))
     check_geometry(what, ex, vtk_points(poly), vtk_triangles(poly, what), False)
@@ -246,8 +261,10 @@ def check_with_meshio(folder, ex):
         what = "meshio " + name
         mesh = meshio.read(os.path.join(folder, name))
         normals = meshio_cell_arrays(mesh).get("facet_normals")
+        # meshio reads the ASCII coordinates as float64: those written exactly
+        check(normals is not None or name == "box_binary.stl", "%s: no facet normals" % what)
         check_stl(what, ex, mesh.points, meshio_triangles(mesh, what),
-                  None if normals is None else normals.reshape(-1, 3))
+                  None if normals is None else normals.reshape(-1, 3), exact=name == "box_ascii.stl")
 
 
 # --- binary PLY, read here ---------------------------------------------------------------------

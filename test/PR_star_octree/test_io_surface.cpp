@@ -320,6 +320,28 @@ void test_files(const std::string& dir) {
   CHECK(mesh.find("\nEnd\n") != std::string::npos);
 }
 
+// An empty surface (no point, no triangle) in every format and mode: accepted, and the stream form
+// writes what the file form writes.
+void test_empty(const std::string& dir) {
+  const Surface empty;
+  for (const IO::Surface_format& f : IO::surface_formats)
+    for (bool binary : {false, true}) {
+      if (binary && !f.write_options->binary) continue;
+      const std::string path = dir + "/empty" + (binary ? "_binary." : ".") + f.extension;
+      prstar_test::Failure_context context(path);
+      std::ostringstream stream;
+      try {
+        IO::write_surface(path, empty, P::use_binary_mode(binary));
+        IO::write_surface(stream, empty, f.extension, P::use_binary_mode(binary));
+        CHECK(file_text(path) == stream.str());
+        CHECK(!stream.str().empty());
+      } catch (const std::exception& e) {
+        FAIL("unexpected exception: " << e.what());
+      }
+    }
+  CHECK_EQUAL(file_text(dir + "/empty_binary.stl").size(), std::size_t(84));
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -333,5 +355,6 @@ int main(int argc, char** argv) {
   test_refused(dir);
   test_os_errors(dir);
   test_files(dir);
+  test_empty(dir);
   return prstar_test::summary("test_io_surface");
 }

@@ -53,9 +53,10 @@ struct Int_array {
 /// \tparam Point_3_ the point type (default: `Exact_predicates_inexact_constructions_kernel::Point_3`)
 template <class Point_3_ = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>
 struct Triangle_surface {
-  using Point_3 = Point_3_;
-  using Triangle = std::array<std::uint32_t, 3>;
+  using Point_3 = Point_3_;                      ///< the point type
+  using Triangle = std::array<std::uint32_t, 3>; ///< the vertex indices of a triangle
 
+  /// the vertices
   std::vector<Point_3> points;
   /// the vertex indices (0-based) of each triangle, oriented (for a boundary: counterclockwise
   /// seen from outside, the normal `(b - a) x (c - a)` pointing out)
@@ -162,12 +163,14 @@ void check_surface_for_writing(const Surface& s, const std::string& name) {
   const std::size_t nv = s.points.size(), nt = s.triangles.size();
   if (nv > 0xffffffffu)
     throw Write_error(name, std::to_string(nv) + " points: more than 32-bit indices can reach");
-  for (std::size_t i = 0; i < nv; ++i) {
-    const auto& p = s.points[i];
-    if (!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
-        !std::isfinite(CGAL::to_double(p.z())))
-      throw Write_error(name, "vertex " + std::to_string(i) + " has a non-finite coordinate");
-  }
+  // the points and their real arrays: the checks of the tetrahedral writers, on a mesh without tetrahedra
+  struct Points_only {
+    const decltype(s.points)& points;
+    std::vector<std::array<std::uint32_t, 4>> tetrahedra;
+    std::vector<int> tetrahedron_labels;
+    const std::vector<Data_array>& point_data;
+  };
+  check_mesh_for_writing(Points_only{s.points, {}, {}, s.point_data}, name);
   for (std::size_t t = 0; t < nt; ++t)
     for (int k = 0; k < 3; ++k)
       if (static_cast<unsigned long long>(s.triangles[t][k]) >= nv)
@@ -175,10 +178,7 @@ void check_surface_for_writing(const Surface& s, const std::string& name) {
                                     std::to_string(s.triangles[t][k]) + " out of range (" +
                                     std::to_string(nv) + " vertices)");
   std::vector<const std::string*> point_names, cell_names;
-  for (const Data_array& a : s.point_data) {
-    check_point_data_for_writing(a, nv, name);
-    point_names.push_back(&a.name);
-  }
+  for (const Data_array& a : s.point_data) point_names.push_back(&a.name);
   const auto check_ints = [&](const Int_array& a, std::size_t n, const char* what, const char* per,
                               std::vector<const std::string*>& names) {
     if (a.values.size() != n)
@@ -206,11 +206,7 @@ void check_surface_for_writing(const Surface& s, const std::string& name) {
 /// Appends `v` in little-endian byte order.
 template <class T>
 void append_little_endian(std::string& out, T v) {
-  unsigned char b[sizeof(T)];
-  std::memcpy(b, &v, sizeof(T));
-  if (!host_is_little_endian())
-    for (std::size_t k = 0; k < sizeof(T) / 2; ++k) std::swap(b[k], b[sizeof(T) - 1 - k]);
-  out.append(reinterpret_cast<const char*>(b), sizeof(T));
+  append_binary(out, host_is_little_endian() ? v : byte_swapped(v));
 }
 
 /// The coordinates of a point as doubles.
