@@ -165,7 +165,7 @@ void check_surface_for_writing(const Surface& s, const std::string& name) {
     throw Write_error(name, std::to_string(nv) + " points: more than 32-bit indices can reach");
   // the points and their real arrays: the checks of the tetrahedral writers, on a mesh without tetrahedra
   struct Points_only {
-    const decltype(s.points)& points;
+    const decltype(Surface::points)& points;
     std::vector<std::array<std::uint32_t, 4>> tetrahedra;
     std::vector<int> tetrahedron_labels;
     const std::vector<Data_array>& point_data;
