@@ -126,7 +126,7 @@ static void test_table() {
         IO::find_mesh_format<Mesh>("dir.vtu/file") == nullptr);
   CHECK_EQUAL(IO::mesh_format_extensions(),
               std::string(".vtu, .vtk, .node/.ele, .mesh, .meshb, .msh, .off/.ts, .xdmf"));
-  CHECK_EQUAL(IO::mesh_format_extensions(true), std::string(".vtu, .vtk, .node/.ele, .xdmf"));
+  CHECK_EQUAL(IO::mesh_format_extensions(true), std::string(".vtu, .vtk, .node/.ele, .msh, .xdmf"));
   // the fuzz regression inputs are kept per format key (replayed by test_fuzz_regressions)
   const fs::path root = PRSTAR_FUZZ_REGRESSIONS;
   if (fs::is_directory(root)) {

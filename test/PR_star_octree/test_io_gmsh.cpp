@@ -12,8 +12,12 @@
 //
 // Usage: test_io_gmsh [generated_data_dir] [shared_data_dir]     the tests
 //        test_io_gmsh --dump FILE          one JSON line: what the reader of FILE's extension read
-//        test_io_gmsh --convert IN OUT [--msh22] [--binary] [--meshb-version V]
-//                                          reads IN, writes OUT (by extension) with the options
+//                                          (counts, labels, names, skipped cells, data arrays)
+//        test_io_gmsh --convert IN OUT [--msh22] [--binary] [--meshb-version V] [--interleave]
+//                     [--add-data]         reads IN, writes OUT (by extension) with the options;
+//                                          --interleave reorders the tetrahedra 0, n/2, 1, ...,
+//                                          --add-data replaces the data arrays by 2 point-data
+//                                          arrays (px, "p index") and 2 cell-data arrays (cq, ct)
 //        test_io_gmsh --bench CUBES DIR    speed: a CUBES^3 x 6 tetrahedra grid written as binary
 //                                          and ASCII 4.1 .msh in DIR, read back (MB/s)
 
@@ -24,6 +28,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <cstdint>
 #include <cstdlib>
 #include <ctime>
@@ -217,25 +223,76 @@ static int dump(const std::string& file) {
     std::cout << (first ? "" : ", ") << json_string(s.first) << ": " << s.second;
     first = false;
   }
+  std::cout << "}, \"tetrahedron_labels\": [";
+  for (std::size_t t = 0; t < m.tetrahedron_labels.size(); ++t)
+    std::cout << (t ? ", " : "") << m.tetrahedron_labels[t];
+  std::cout << "]" << std::setprecision(17);
+  const auto arrays = [](const char* key, const std::vector<CGAL::PR_star_octree::Data_array>& data) {
+    std::cout << ", \"" << key << "\": {";
+    for (std::size_t k = 0; k < data.size(); ++k) {
+      std::cout << (k ? ", " : "") << json_string(data[k].name) << ": [";
+      for (std::size_t i = 0; i < data[k].values.size(); ++i)
+        std::cout << (i ? ", " : "") << data[k].values[i];
+      std::cout << "]";
+    }
+    std::cout << "}";
+  };
+  arrays("point_data", m.point_data);
+  arrays("cell_data", m.cell_data);
   double sum = 0;
   for (const auto& p : m.points) sum += p.x() + 2 * p.y() + 3 * p.z();
-  std::cout << "}, \"coordinate_checksum\": " << std::setprecision(17) << sum << "}" << std::endl;
+  std::cout << ", \"coordinate_checksum\": " << sum << "}" << std::endl;
   return 0;
+}
+
+/// Reorders the tetrahedra (and their labels) as 0, n/2, 1, n/2 + 1, ...: a mesh whose labels
+/// come in two runs gets them interleaved.
+static void interleave_halves(Mesh& m) {
+  const std::size_t n = m.tetrahedra.size(), h = (n + 1) / 2;
+  Mesh r = m;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t from = k % 2 == 0 ? k / 2 : h + k / 2;
+    r.tetrahedra[k] = m.tetrahedra[from];
+    if (!m.tetrahedron_labels.empty()) r.tetrahedron_labels[k] = m.tetrahedron_labels[from];
+  }
+  m = std::move(r);
+}
+
+/// Two point-data arrays and two cell-data arrays whose values need all their 17 digits.
+static void add_test_data(Mesh& m) {
+  m.point_data.clear();
+  m.cell_data.clear();
+  CGAL::PR_star_octree::Data_array px{"px", {}}, pi{"p index", {}}, cq{"cq", {}}, ct{"ct", {}};
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    px.values.push_back(m.points[i].x() / 3 + double(i) / 7);
+    pi.values.push_back(-(double(i) + 0.1) * 1.0000000000000002e-300);
+  }
+  for (std::size_t t = 0; t < m.tetrahedra.size(); ++t) {
+    cq.values.push_back(double(t) / 3 - 0.1);
+    ct.values.push_back(double(t) + 1);
+  }
+  m.point_data = {px, pi};
+  m.cell_data = {cq, ct};
 }
 
 static int convert(int argc, char** argv) {
   const std::string in = argv[2], out = argv[3];
   Gmsh_variant options{4.1, false};
   int meshb_version = 0;
+  bool add_data = false, interleave = false;
   for (int i = 4; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--msh22") options.version = 2.2;
     if (a == "--binary") options.binary = true;
     if (a == "--meshb-version" && i + 1 < argc) meshb_version = std::atoi(argv[++i]);
+    if (a == "--add-data") add_data = true;
+    if (a == "--interleave") interleave = true;
   }
   Mesh m;
   try {
     IO::read_tetrahedral_mesh(in, m);
+    if (interleave) interleave_halves(m);
+    if (add_data) add_test_data(m);
     if (IO::internal::lower_extension(out) == "msh")
       write_gmsh_variant(out, m, options);
     else if (IO::internal::lower_extension(out) == "meshb" && meshb_version != 0)
@@ -460,14 +517,16 @@ static void test_hand_written() {
     const Mesh m = read_as(msh22_ascii, ".msh");
     CHECK_EQUAL(m.points.size(), 6u);
     CHECK_EQUAL(m.tetrahedra.size(), 4u);
-    // tags 10 20 35 7 100 3 -> indices 0 1 2 3 4 5
+    // node tags 10 20 35 7 100 3 -> indices 0 1 2 3 4 5; the tetrahedra in the order of their
+    // element tags 4 5 6 9 (the file lists 4 9 5 6)
     if (m.tetrahedra.size() == 4) {
       CHECK((m.tetrahedra[0] == Mesh::Tetrahedron{0, 1, 2, 3}));
-      CHECK((m.tetrahedra[1] == Mesh::Tetrahedron{1, 2, 3, 4}));
-      CHECK((m.tetrahedra[2] == Mesh::Tetrahedron{1, 2, 3, 5}));
-      CHECK((m.tetrahedra[3] == Mesh::Tetrahedron{0, 1, 2, 4}));
+      CHECK((m.tetrahedra[1] == Mesh::Tetrahedron{1, 2, 3, 5}));
+      CHECK((m.tetrahedra[2] == Mesh::Tetrahedron{0, 1, 2, 4}));
+      CHECK((m.tetrahedra[3] == Mesh::Tetrahedron{1, 2, 3, 4}));
     }
-    CHECK((m.tetrahedron_labels == std::vector<int>{10, 20, 0, 10}));
+    CHECK((m.tetrahedron_labels == std::vector<int>{10, 0, 10, 20}));
+    CHECK(m.point_data.empty()); // the view "t" has a value for one node only: dropped
     CHECK((m.label_names == std::map<int, std::string>{{10, "left block"}, {20, "right"}}));
     CHECK(
         (m.skipped_cells == std::map<std::string, std::size_t>{{"point", 1}, {"line", 1}, {"triangle", 1}}));
@@ -478,14 +537,16 @@ static void test_hand_written() {
     const Mesh m = read_as(msh41_ascii, ".msh");
     CHECK_EQUAL(m.points.size(), 6u);
     CHECK_EQUAL(m.tetrahedra.size(), 5u);
-    // tags 5 40 6 30 31 32 -> 0..5
+    // node tags 5 40 6 30 31 32 -> 0..5; the tetrahedra in the order of their element tags 103
+    // 104 105 106 108 (the blocks list 103 108, 104, 105 106)
     if (m.tetrahedra.size() == 5) {
       CHECK((m.tetrahedra[0] == Mesh::Tetrahedron{0, 1, 2, 3}));
-      CHECK((m.tetrahedra[1] == Mesh::Tetrahedron{1, 2, 3, 4}));
-      CHECK((m.tetrahedra[2] == Mesh::Tetrahedron{0, 2, 3, 5}));
-      CHECK((m.tetrahedra[4] == Mesh::Tetrahedron{0, 1, 4, 5}));
+      CHECK((m.tetrahedra[1] == Mesh::Tetrahedron{0, 2, 3, 5}));
+      CHECK((m.tetrahedra[2] == Mesh::Tetrahedron{2, 3, 4, 5}));
+      CHECK((m.tetrahedra[3] == Mesh::Tetrahedron{0, 1, 4, 5}));
+      CHECK((m.tetrahedra[4] == Mesh::Tetrahedron{1, 2, 3, 4}));
     }
-    CHECK((m.tetrahedron_labels == std::vector<int>{9, 9, 4, 0, 0}));
+    CHECK((m.tetrahedron_labels == std::vector<int>{9, 4, 0, 0, 9}));
     CHECK((m.label_names == std::map<int, std::string>{{4, "a"}, {9, "b b"}}));
     CHECK((m.skipped_cells == std::map<std::string, std::size_t>{{"point", 1}, {"triangle", 2}}));
     CHECK(m.points[2] == Point(0, 1, 0));
@@ -649,6 +710,323 @@ static void test_hand_written() {
       if (m.points.size() == 5) CHECK(m.points[4] == Point(1, 1, 0.5));
       if (m.tetrahedra.size() == 2) CHECK((m.tetrahedra[1] == Mesh::Tetrahedron{1, 2, 3, 4}));
     }
+}
+
+// ---- element blocks per label, $NodeData and $ElementData
+
+/// `labelled_mesh()` with two point-data and two cell-data arrays whose values need 17 digits.
+static Mesh mesh_with_data() {
+  Mesh m = labelled_mesh();
+  m.point_data.push_back({"temperature", {}});
+  m.point_data.push_back({"phi 2", {}});
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    m.point_data[0].values.push_back(0.1 * double(i) - 1.0 / 3);
+    m.point_data[1].values.push_back(i % 3 == 0 ? 1e-300 : -3.3333333333333335e+200 * double(i));
+  }
+  m.cell_data.push_back({"quality", {}});
+  m.cell_data.push_back({"rank", {}});
+  for (std::size_t t = 0; t < m.tetrahedra.size(); ++t) {
+    m.cell_data[0].values.push_back(std::sqrt(double(t) + 0.5));
+    m.cell_data[1].values.push_back(double(t % 4));
+  }
+  return m;
+}
+
+static std::size_t occurrences(const std::string& s, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = s.find(what); at != std::string::npos; at = s.find(what, at + 1)) ++n;
+  return n;
+}
+
+static void check_same_data(const Mesh& a, const Mesh& b, const std::string& what) {
+  prstar_test::Failure_context ctx(what);
+  CHECK_EQUAL(b.point_data.size(), a.point_data.size());
+  CHECK_EQUAL(b.cell_data.size(), a.cell_data.size());
+  for (std::size_t k = 0; k < std::min(a.point_data.size(), b.point_data.size()); ++k) {
+    CHECK_EQUAL(b.point_data[k].name, a.point_data[k].name);
+    CHECK_MSG(b.point_data[k].values == a.point_data[k].values, "point data " << k << " differs");
+  }
+  for (std::size_t k = 0; k < std::min(a.cell_data.size(), b.cell_data.size()); ++k) {
+    CHECK_EQUAL(b.cell_data[k].name, a.cell_data[k].name);
+    CHECK_MSG(b.cell_data[k].values == a.cell_data[k].values, "cell data " << k << " differs");
+  }
+}
+
+static void test_blocks_and_data() {
+  const Mesh m = mesh_with_data();
+  std::map<int, std::vector<std::size_t>> of_label; // the tetrahedra of each label, in order
+  for (std::size_t t = 0; t < m.tetrahedra.size(); ++t) of_label[m.tetrahedron_labels[t]].push_back(t);
+  CHECK_EQUAL(of_label.size(), 4u);
+  struct V {
+    const char* name;
+    Gmsh_variant o;
+  };
+  for (const V& v : {V{"41 ascii", {4.1, false}}, V{"41 binary", {4.1, true}}, V{"22 ascii", {2.2, false}},
+                     V{"22 binary", {2.2, true}}}) {
+    prstar_test::Failure_context ctx(std::string("data ") + v.name);
+    std::ostringstream out;
+    write_gmsh_variant(out, m, v.o);
+    const std::string s = out.str();
+    std::istringstream in(s);
+    Mesh r;
+    IO::read_gmsh(in, r, "data");
+    check_same(m, r, std::string("data ") + v.name); // vertex and tetrahedron order, labels
+    check_same_data(m, r, std::string("data ") + v.name);
+    CHECK(r.label_names == m.label_names);
+    CHECK_EQUAL(occurrences(s, "$NodeData\n"), 2u);
+    CHECK_EQUAL(occurrences(s, "$ElementData\n"), 2u);
+    CHECK(s.find("\n\"temperature\"\n1\n0\n3\n0\n1\n" + std::to_string(m.points.size()) + "\n") !=
+          std::string::npos);
+    const std::size_t at = s.find("$Elements\n") + 10;
+    if (v.o.version == 4.1 && v.o.binary) {
+      std::uint64_t head[4];
+      std::memcpy(head, s.data() + at, sizeof(head));
+      CHECK_EQUAL(head[0], 4u); // one block per label
+      CHECK_EQUAL(head[1], m.tetrahedra.size());
+      CHECK_EQUAL(head[2], 1u);
+      CHECK_EQUAL(head[3], m.tetrahedra.size());
+    } else if (v.o.version == 4.1) {
+      // one block per label: its entity's physical tag is the label, its elements are the label's
+      // tetrahedra in the order of the mesh, element tag = index + 1
+      std::istringstream e(s.substr(at));
+      std::size_t blocks, total, min_tag, max_tag;
+      e >> blocks >> total >> min_tag >> max_tag;
+      CHECK_EQUAL(blocks, 4u);
+      CHECK_EQUAL(total, m.tetrahedra.size());
+      CHECK(min_tag == 1 && max_tag == m.tetrahedra.size());
+      std::map<std::size_t, int> entity_label; // from $Entities (entity tag e + 1 holds label ...)
+      for (std::size_t b = 0; b < blocks; ++b) {
+        int dim, entity, type;
+        std::size_t n;
+        e >> dim >> entity >> type >> n;
+        CHECK(dim == 3 && type == 4);
+        std::vector<std::size_t> tets(n);
+        std::size_t node;
+        for (std::size_t i = 0; i < n; ++i) {
+          e >> tets[i];
+          --tets[i];
+          for (int k = 0; k < 4; ++k) e >> node;
+        }
+        const int label = m.tetrahedron_labels[tets.empty() ? 0 : tets[0]];
+        CHECK(tets == of_label[label]);
+      }
+      CHECK(s.find("$Entities\n0 0 0 4\n") != std::string::npos);
+    } else if (!v.o.binary) {
+      // 2.2: the elements in the order of the mesh, element tag = index + 1
+      std::istringstream e(s.substr(at));
+      std::size_t n;
+      e >> n;
+      std::string line;
+      std::getline(e, line);
+      bool in_order = true;
+      for (std::size_t t = 0; t < n && std::getline(e, line); ++t)
+        in_order = in_order &&
+                   line.rfind(std::to_string(t + 1) + " 4 2 " + std::to_string(m.tetrahedron_labels[t]) + " ",
+                              0) == 0;
+      CHECK(in_order);
+    }
+    // the values exactly: in the ASCII files, the shortest text that reads back the same double
+    if (!v.o.binary) CHECK(s.find("\n2 -3.3333333333333335e+200\n") != std::string::npos);
+  }
+  {
+    // a mesh without labels: one block; labels already grouped: one block per label
+    Mesh nl = grid(2, false), r;
+    std::ostringstream out;
+    write_gmsh_variant(out, nl, {4.1, false});
+    CHECK(out.str().find("$Elements\n1 48 1 48\n3 1 4 48\n") != std::string::npos);
+    Mesh g = grid(2);
+    std::stable_sort(g.tetrahedron_labels.begin(), g.tetrahedron_labels.end());
+    std::ostringstream go;
+    write_gmsh_variant(go, g, {4.1, false});
+    CHECK(go.str().find("$Elements\n2 48 1 48\n3 1 4 24\n1 ") != std::string::npos);
+    std::istringstream gi(go.str());
+    IO::read_gmsh(gi, r, "grouped");
+    check_same(g, r, "grouped labels");
+  }
+  {
+    // what the writer refuses: a name gmsh cannot quote, arrays of the wrong size, non-finite values
+    Mesh bad = mesh_with_data();
+    bad.point_data[0].name = "a\"b";
+    std::ostringstream out;
+    CHECK_THROWS(IO::Write_error, "double quote", IO::write_gmsh(out, bad));
+    bad = mesh_with_data();
+    bad.cell_data[1].values.pop_back();
+    CHECK_THROWS(IO::Write_error, "cell data 'rank' has", IO::write_gmsh(out, bad));
+    bad = mesh_with_data();
+    bad.point_data[1].values[3] = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS(IO::Write_error, "not finite", IO::write_gmsh(out, bad));
+    const std::string f = tmp_dir() + "/refused.msh";
+    CHECK_THROWS(IO::Write_error, "not finite", IO::write_gmsh(f, bad));
+    CHECK(!fs::exists(f)); // checked before the file is created
+  }
+  {
+    // through the format table: write_tetrahedral_mesh keeps every array
+    const std::string f = tmp_dir() + "/table.msh";
+    IO::write_tetrahedral_mesh(f, m, P::use_binary_mode(true));
+    Mesh r;
+    IO::read_tetrahedral_mesh(f, r);
+    check_same_data(m, r, "format table");
+  }
+}
+
+// hand-written data sections: node data in any order and split over sections (the partitions of a
+// view), a later time step replacing an earlier one, a 3-component view and an incomplete view
+// (skipped), element data on a triangle (ignored) and on tetrahedra listed out of tag order
+static const char* msh41_data =
+    "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+    "$Nodes\n1 5 1 50\n3 1 0 5\n50\n20\n30\n40\n10\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n$EndNodes\n"
+    "$Elements\n3 4 1 9\n"
+    "3 1 4 2\n9 50 20 30 40\n2 20 30 40 10\n"
+    "2 1 2 1\n5 50 20 30\n"
+    "3 2 4 1\n7 50 20 40 10\n$EndElements\n"
+    "$NodeData\n1\n\"T\"\n1\n0\n3\n0\n1\n3\n10 5.5\n50 1.5\n30 3.5\n$EndNodeData\n"
+    "$NodeData\n2\n\"T\"\n\"scheme\"\n1\n0\n4\n0\n1\n2\n3\n20 2.5\n40 4.5\n$EndNodeData\n"
+    "$NodeData\n1\n\"U\"\n1\n0\n3\n0\n1\n5\n10 1\n20 1\n30 1\n40 1\n50 1\n$EndNodeData\n"
+    "$NodeData\n1\n\"U\"\n1\n0.5\n3\n1\n1\n5\n10 -1\n20 -2\n30 -3\n40 -4\n50 -0.1\n$EndNodeData\n"
+    "$NodeData\n1\n\"V\"\n1\n0\n3\n0\n3\n1\n10 1 2 3\n$EndNodeData\n"
+    "$NodeData\n1\n\"partial\"\n1\n0\n3\n0\n1\n1\n10 1\n$EndNodeData\n"
+    "$ElementData\n1\n\"E\"\n1\n0\n3\n0\n1\n4\n7 0.7\n5 0.5\n9 0.9\n2 0.2\n$EndElementData\n"
+    "$ElementNodeData\n1\n\"skipped\"\n1\n0\n3\n0\n1\n0\n$EndElementNodeData\n";
+
+static void test_hand_written_data() {
+  {
+    prstar_test::Failure_context ctx("msh 4.1 ascii data");
+    const Mesh m = read_as(msh41_data, ".msh");
+    CHECK_EQUAL(m.tetrahedra.size(), 3u);
+    // tags 2, 7, 9 (the file lists 9, 2, 7)
+    if (m.tetrahedra.size() == 3) {
+      CHECK((m.tetrahedra[0] == Mesh::Tetrahedron{1, 2, 3, 4}));
+      CHECK((m.tetrahedra[1] == Mesh::Tetrahedron{0, 1, 3, 4}));
+      CHECK((m.tetrahedra[2] == Mesh::Tetrahedron{0, 1, 2, 3}));
+    }
+    CHECK_EQUAL(m.point_data.size(), 2u);
+    if (m.point_data.size() == 2) {
+      CHECK_EQUAL(m.point_data[0].name, std::string("T"));
+      CHECK((m.point_data[0].values == std::vector<double>{1.5, 2.5, 3.5, 4.5, 5.5}));
+      CHECK_EQUAL(m.point_data[1].name, std::string("U"));
+      CHECK((m.point_data[1].values == std::vector<double>{-0.1, -2, -3, -4, -1}));
+    }
+    CHECK_EQUAL(m.cell_data.size(), 1u);
+    if (m.cell_data.size() == 1) {
+      CHECK_EQUAL(m.cell_data[0].name, std::string("E"));
+      CHECK((m.cell_data[0].values == std::vector<double>{0.2, 0.7, 0.9}));
+    }
+    CHECK((m.skipped_cells == std::map<std::string, std::size_t>{{"triangle", 1}}));
+  }
+  // the same in binary 4.1 and 2.2, both byte orders: 4-byte tags and doubles after a text header
+  for (bool swap : {false, true})
+    for (int version : {41, 22}) {
+      prstar_test::Failure_context ctx("binary data " + std::to_string(version) + (swap ? " swapped" : ""));
+      Bytes b;
+      b.swap = swap;
+      const double xyz[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+      if (version == 41) {
+        b.text("$MeshFormat\n4.1 1 8\n").i32(1).text("\n$EndMeshFormat\n$Nodes\n");
+        b.u64(1).u64(4).u64(1).u64(4).i32(3).i32(1).i32(0).u64(4).u64(4).u64(3).u64(2).u64(1);
+        for (const auto& p : xyz) b.f64(p[0]).f64(p[1]).f64(p[2]);
+        b.text("\n$EndNodes\n$Elements\n").u64(1).u64(1).u64(6).u64(6).i32(3).i32(1).i32(4).u64(1);
+        b.u64(6).u64(1).u64(2).u64(3).u64(4).text("\n$EndElements\n");
+      } else {
+        b.text("$MeshFormat\n2.2 1 8\n").i32(1).text("\n$EndMeshFormat\n$Nodes\n4\n");
+        for (int i = 0; i < 4; ++i) b.i32(4 - i).f64(xyz[i][0]).f64(xyz[i][1]).f64(xyz[i][2]);
+        b.text("\n$EndNodes\n$Elements\n1\n").i32(4).i32(1).i32(0).i32(6).i32(1).i32(2).i32(3).i32(4);
+        b.text("\n$EndElements\n");
+      }
+      b.text("$NodeData\n1\n\"w\"\n1\n0.0\n3\n0\n1\n4\n");
+      for (int tag : {2, 4, 1, 3}) b.i32(tag).f64(0.25 * tag + 1e-17);
+      b.text("\n$EndNodeData\n$ElementData\n1\n\"c\"\n1\n0.0\n3\n0\n1\n1\n").i32(6).f64(-7.125);
+      b.text("\n$EndElementData\n$NodeData\n1\n\"vector\"\n1\n0.0\n3\n0\n3\n1\n").i32(1).f64(1).f64(2).f64(3);
+      b.text("\n$EndNodeData\n");
+      const Mesh m = read_as(b.s, ".msh");
+      CHECK_EQUAL(m.point_data.size(), 1u);
+      CHECK_EQUAL(m.cell_data.size(), 1u);
+      if (m.point_data.size() == 1)
+        CHECK((m.point_data[0].values ==
+               std::vector<double>{1 + 1e-17, 0.75 + 1e-17, 0.5 + 1e-17, 0.25 + 1e-17}));
+      if (m.cell_data.size() == 1) CHECK((m.cell_data[0].values == std::vector<double>{-7.125}));
+    }
+  // malformed data sections
+  const std::string mesh41 = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+                             "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n"
+                             "$Elements\n2 2 1 2\n3 1 4 1\n1 1 2 3 4\n2 1 2 1\n2 1 2 3\n$EndElements\n";
+  const auto nd = [](const std::string& body) {
+    return "$NodeData\n1\n\"d\"\n1\n0\n" + body + "$EndNodeData\n";
+  };
+  const auto ed = [](const std::string& body) {
+    return "$ElementData\n1\n\"d\"\n1\n0\n" + body + "$EndElementData\n";
+  };
+  expect_refused(mesh41 + nd("3\n0\n1\n4\n1 1\n2 2\n3 3\n5 5\n"), ".msh",
+                 "$NodeData 'd': node tag 5 is not in $Nodes", "data unknown node");
+  expect_refused(mesh41 + nd("3\n0\n1\n4\n1 1\n2 2\n3 3\n"), ".msh",
+                 "node tag '$EndNodeData' is not an integer", "data short");
+  expect_refused(mesh41 + nd("3\n0\n1\n2\n1 1\n2 2\n3 3\n"), ".msh", "expected $EndNodeData", "data long");
+  expect_refused(mesh41 + nd("3\n0\n1\n2\n1 1\n2 nan\n"), ".msh",
+                 "case_data nan.msh:33: value 'nan' is not finite", "data nan");
+  expect_refused(mesh41 + nd("3\n0\n1\n2\n1 1\n2 x\n"), ".msh", "value 'x' is not a number", "data text");
+  expect_refused(mesh41 + nd("2\n0\n1\n"), ".msh", "2 integer tags, at least 3 expected", "data int tags");
+  expect_refused(mesh41 + nd("3\n0\n0\n1\n1 1\n"), ".msh", "0 components per entry", "data components");
+  expect_refused(mesh41 + nd("3\n0\n1\n-1\n"), ".msh", "number of entries -1 is negative", "data negative");
+  expect_refused(mesh41 + "$NodeData\n1\n\"d\n1\n0\n3\n0\n1\n0\n$EndNodeData\n", ".msh",
+                 "unterminated string tag", "data quote");
+  expect_refused(mesh41 + ed("3\n0\n1\n1\n3 1\n"), ".msh",
+                 "$ElementData 'd': element tag 3 is not in $Elements", "data unknown element");
+  expect_refused(mesh41 + ed("3\n0\n1\n1\n0 1\n"), ".msh", "element tag 0 is not in $Elements",
+                 "data element 0");
+  CHECK_EQUAL(read_as(mesh41 + ed("3\n0\n1\n2\n2 7\n1 1\n"), ".msh").cell_data.size(), 1u); // 2: a triangle
+  expect_refused("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n" + nd("3\n0\n1\n0\n"), ".msh",
+                 "$NodeData before $Nodes", "data before nodes");
+  expect_refused("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n0 0 0 0\n$EndNodes\n" + ed("3\n0\n1\n0\n"),
+                 ".msh", "$ElementData before $Elements", "data before elements");
+  {
+    Bytes b;
+    b.text("$MeshFormat\n2.2 1 8\n").i32(1).text("\n$EndMeshFormat\n$Nodes\n1\n").i32(1).f64(0).f64(0).f64(0);
+    b.text("\n$EndNodes\n$Elements\n0\n\n$EndElements\n");
+    Bytes lie = b, zero = b, inf = b;
+    lie.text("$NodeData\n1\n\"d\"\n1\n0\n3\n0\n1\n1000000000000\n").i32(1).f64(0);
+    expect_refused(lie.s, ".msh", "1000000000000 entries announced, but only", "binary data lie");
+    zero.text("$NodeData\n1\n\"d\"\n1\n0\n3\n0\n1\n1\n").i32(0).f64(0).text("\n$EndNodeData\n");
+    expect_refused(zero.s, ".msh", "node tag 0 (tags start at 1)", "binary data tag 0");
+    inf.text("$NodeData\n1\n\"d\"\n1\n0\n3\n0\n1\n1\n").i32(1).f64(std::numeric_limits<double>::infinity());
+    inf.text("\n$EndNodeData\n");
+    expect_refused(inf.s, ".msh", "node tag 1: the value is not finite", "binary data inf");
+  }
+  {
+    // every truncation of a file with data is refused, but for the cuts right after a section
+    std::ostringstream out;
+    Mesh g = grid(1);
+    g.point_data.push_back({"p", std::vector<double>(g.points.size(), 0.5)});
+    g.cell_data.push_back({"c", std::vector<double>(g.tetrahedra.size(), -0.25)});
+    for (const Gmsh_variant v :
+         {Gmsh_variant{4.1, false}, Gmsh_variant{4.1, true}, Gmsh_variant{2.2, true}}) {
+      out.str("");
+      write_gmsh_variant(out, g, v);
+      const std::string full = out.str();
+      int wrong = 0;
+      for (std::size_t n = 0; n + 1 < full.size(); ++n) {
+        const std::string cut = full.substr(0, n);
+        bool at_end_of_section = false;
+        for (const char* end : {"$EndElements", "$EndNodeData", "$EndElementData"})
+          for (const char* tail : {"", "\n"})
+            at_end_of_section =
+                at_end_of_section || (cut.size() >= std::strlen(end) + std::strlen(tail) &&
+                                      cut.compare(cut.size() - std::strlen(tail) - std::strlen(end),
+                                                  std::string::npos, std::string(end) + tail) == 0);
+        std::istringstream in(cut);
+        Mesh r;
+        bool read = false;
+        try {
+          IO::read_gmsh(in, r, "cut");
+          read = true;
+        } catch (const IO::Read_error&) {
+        } catch (...) {
+          ++wrong;
+        }
+        if (read != at_end_of_section) ++wrong;
+      }
+      CHECK_MSG(wrong == 0, "version " << v.version << (v.binary ? " binary" : " ascii") << ": " << wrong
+                                       << " truncations read when they should not, or the reverse");
+    }
+  }
 }
 
 // ---- malformed files
@@ -834,6 +1212,8 @@ int main(int argc, char** argv) {
   if (argc >= 4 && std::string(argv[1]) == "--bench") return bench(std::atoi(argv[2]), argv[3]);
   test_round_trips();
   test_hand_written();
+  test_blocks_and_data();
+  test_hand_written_data();
   test_malformed();
   fs::remove_all(tmp_dir());
   return prstar_test::summary("test_io_gmsh");

@@ -178,7 +178,8 @@ public:
 
   void read(Mesh& result) {
     read_mesh_format();
-    bool has_nodes = false, has_elements = false;
+    bool& has_nodes = has_nodes_;
+    bool& has_elements = has_elements_;
     std::string_view section;
     while (next_section(section)) {
       if (section == "$PhysicalNames") {
@@ -206,7 +207,12 @@ public:
           read_elements_41();
         else
           read_elements_22();
+        sort_by_element_tag();
         has_elements = true;
+      } else if (section == "$NodeData") {
+        read_data(false);
+      } else if (section == "$ElementData") {
+        read_data(true);
       } else if (section == "$MeshFormat") {
         fail("duplicate $MeshFormat section");
       } else {
@@ -218,6 +224,14 @@ public:
     if (!has_nodes) fail("no $Nodes section");
     if (!has_elements) fail("no $Elements section");
     if (!any_label_) mesh_.tetrahedron_labels.clear();
+    // the views with a value for every node or tetrahedron become data arrays, the others are dropped
+    const auto complete = [](const std::vector<double>& v) {
+      return std::none_of(v.begin(), v.end(), [](double x) { return std::isnan(x); });
+    };
+    for (Data_view& v : node_views_)
+      if (complete(v.values)) mesh_.point_data.push_back({std::move(v.name), std::move(v.values)});
+    for (Data_view& v : element_views_)
+      if (complete(v.values)) mesh_.cell_data.push_back({std::move(v.name), std::move(v.values)});
     result = std::move(mesh_);
   }
 
@@ -583,6 +597,7 @@ private:
     Index twice;
     if (has_repeated_vertex(t, twice))
       fail("element " + std::to_string(element) + ": a tetrahedron listing a node twice");
+    note_tetrahedron_tag(element);
     mesh_.tetrahedra.push_back(t);
     mesh_.tetrahedron_labels.push_back(physical);
     if (physical != 0) any_label_ = true;
@@ -642,8 +657,7 @@ private:
       const Gmsh_element_type et = gmsh_element_type(type);
       if (et.nodes == 0) {
         if (binary_) fail("unknown element type " + std::to_string(type));
-        skip_line("an element");
-        for (std::uint64_t i = 0; i < n; ++i) skip_line("an element");
+        skip_element_lines(n);
         mesh_.skipped_cells["type " + std::to_string(type)] += static_cast<std::size_t>(n);
         continue;
       }
@@ -658,7 +672,9 @@ private:
         const std::size_t per = (1 + npt) * size_bytes_;
         need_items(n, per, "elements");
         if (!tet) {
-          pos_ += static_cast<std::size_t>(n) * per;
+          for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i, pos_ += per)
+            saw_element(size_bytes_ == 8 ? load_value<std::uint64_t>(data_.data() + pos_, swap_)
+                                         : load_value<std::uint32_t>(data_.data() + pos_, swap_));
           skipped(et.name, n);
           continue;
         }
@@ -675,8 +691,7 @@ private:
         }
       } else {
         if (!tet) {
-          skip_line("an element");
-          for (std::uint64_t i = 0; i < n; ++i) skip_line("an element");
+          skip_element_lines(n);
           skipped(et.name, n);
           continue;
         }
@@ -718,7 +733,10 @@ private:
             4 * (1 + static_cast<std::size_t>(ntags) + static_cast<std::size_t>(et.nodes));
         need_items(static_cast<std::uint64_t>(follow), per, "elements");
         if (!is_gmsh_tetrahedron(type)) {
-          pos_ += static_cast<std::size_t>(follow) * per;
+          for (std::int32_t i = 0; i < follow; ++i, pos_ += per) {
+            const std::int32_t tag = load_value<std::int32_t>(data_.data() + pos_, swap_);
+            if (tag > 0) saw_element(static_cast<std::uint64_t>(tag));
+          }
           skipped(et.name, static_cast<std::uint64_t>(follow));
           continue;
         }
@@ -743,6 +761,7 @@ private:
       const std::uint64_t tag = count("element tag");
       const long long type = integer("element type");
       const Gmsh_element_type et = gmsh_element_type(type);
+      saw_element(tag);
       if (!is_gmsh_tetrahedron(type)) {
         if (et.nodes == 0)
           mesh_.skipped_cells["type " + std::to_string(type)] += 1;
@@ -766,11 +785,201 @@ private:
     }
   }
 
+  /// Skips the rest of an element block header line and `n` element lines (ASCII 4.1), noting the
+  /// element tag that starts each.
+  void skip_element_lines(std::uint64_t n) {
+    skip_line("an element");
+    for (std::uint64_t i = 0; i < n; ++i) {
+      saw_element(count("element tag"));
+      skip_line("an element");
+    }
+  }
+  void saw_element(std::uint64_t tag) { max_element_tag_ = std::max(max_element_tag_, tag); }
+
+  /// Records the element tag of the tetrahedron about to be added: `first_tet_tag_ + index` while
+  /// they run consecutively (no array), then in `tet_tags_`.
+  void note_tetrahedron_tag(std::uint64_t tag) {
+    saw_element(tag);
+    const std::size_t i = mesh_.tetrahedra.size();
+    if (tags_consecutive_) {
+      if (i == 0) first_tet_tag_ = tag;
+      if (tag == first_tet_tag_ + i) return;
+      check_memory(name_, 0, mesh_.points.size(), mesh_.tetrahedra.capacity(), sizeof(Point_3),
+                   sizeof(typename Mesh::Tetrahedron) + sizeof(int), 0, 1);
+      tet_tags_.reserve(mesh_.tetrahedra.capacity());
+      for (std::size_t k = 0; k < i; ++k) tet_tags_.push_back(first_tet_tag_ + k);
+      tags_consecutive_ = false;
+    }
+    tet_tags_.push_back(tag);
+  }
+
+  /// Puts the tetrahedra in the order of their element tags when the file does not list them so
+  /// (a stable sort: equal tags keep the order of the file).
+  void sort_by_element_tag() {
+    if (tags_consecutive_ || std::is_sorted(tet_tags_.begin(), tet_tags_.end())) return;
+    const std::size_t n = tet_tags_.size();
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [this](std::size_t a, std::size_t b) { return tet_tags_[a] < tet_tags_[b]; });
+    {
+      std::vector<typename Mesh::Tetrahedron> t(n);
+      for (std::size_t i = 0; i < n; ++i) t[i] = mesh_.tetrahedra[order[i]];
+      mesh_.tetrahedra.swap(t);
+    }
+    {
+      std::vector<int> l(n);
+      for (std::size_t i = 0; i < n; ++i) l[i] = mesh_.tetrahedron_labels[order[i]];
+      mesh_.tetrahedron_labels.swap(l);
+    }
+    std::vector<std::uint64_t> g(n);
+    for (std::size_t i = 0; i < n; ++i) g[i] = tet_tags_[order[i]];
+    tet_tags_.swap(g);
+  }
+
+  /// The tetrahedra whose element tag is `tag`, as a range of indices `[first, second)` (after
+  /// `sort_by_element_tag()`).
+  std::pair<std::size_t, std::size_t> tetrahedra_of_tag(std::uint64_t tag) const {
+    const std::size_t n = mesh_.tetrahedra.size();
+    if (tags_consecutive_) {
+      if (n == 0 || tag < first_tet_tag_ || tag - first_tet_tag_ >= n) return {0, 0};
+      const std::size_t k = static_cast<std::size_t>(tag - first_tet_tag_);
+      return {k, k + 1};
+    }
+    const auto r = std::equal_range(tet_tags_.begin(), tet_tags_.end(), tag);
+    return {static_cast<std::size_t>(r.first - tet_tags_.begin()),
+            static_cast<std::size_t>(r.second - tet_tags_.begin())};
+  }
+
+  // ---- $NodeData and $ElementData
+
+  /// A string tag: a quoted string, or the rest of the line when it does not start with a quote.
+  std::string string_tag() {
+    if (!skip_space()) fail_eof("a string tag");
+    if (data_[pos_] == '"') {
+      const std::size_t close = data_.find_first_of("\"\n", pos_ + 1);
+      if (close == std::string_view::npos || data_[close] != '"') fail("unterminated string tag");
+      const std::string r(data_.substr(pos_ + 1, close - pos_ - 1));
+      pos_ = close + 1;
+      return r;
+    }
+    const std::size_t eol = std::min(data_.find('\n', pos_), data_.size());
+    const std::string r(trim(data_.substr(pos_, eol - pos_)));
+    pos_ = eol;
+    return r;
+  }
+
+  /// One `$NodeData` or `$ElementData` section (`elements`): a view of scalars is merged into the
+  /// values of its name (a new time step replaces them), other views are skipped.
+  void read_data(bool elements) {
+    const std::string section = elements ? "$ElementData" : "$NodeData";
+    if (!(elements ? has_elements_ : has_nodes_))
+      fail(section + " before " + (elements ? "$Elements" : "$Nodes"));
+    const std::uint64_t nstrings = count("number of string tags");
+    std::string view;
+    for (std::uint64_t k = 0; k < nstrings; ++k) {
+      std::string t = string_tag();
+      if (k == 0) view = std::move(t);
+    }
+    const std::uint64_t nreals = count("number of real tags");
+    for (std::uint64_t k = 0; k < nreals; ++k) real("real tag");
+    const std::uint64_t nints = count("number of integer tags");
+    if (nints < 3)
+      fail(section + " '" + view + "': " + std::to_string(nints) +
+           " integer tags, at least 3 expected (time step, number of components, number of entries)");
+    long long step = 0, components = 0;
+    std::uint64_t n = 0;
+    for (std::uint64_t k = 0; k < nints; ++k) {
+      if (k == 0)
+        step = integer("time step");
+      else if (k == 1)
+        components = integer("number of components");
+      else if (k == 2)
+        n = count("number of entries");
+      else
+        integer("integer tag");
+    }
+    if (components < 1 || components > (1 << 20))
+      fail(section + " '" + view + "': " + std::to_string(components) + " components per entry");
+    const std::size_t entry_bytes = 4 + 8 * static_cast<std::size_t>(components);
+    if (binary_) {
+      end_line("the integer tags");
+      need_items(n, entry_bytes, "entries");
+    }
+    const char* what = elements ? "element tag" : "node tag";
+    if (components != 1 || view.empty()) { // not a named scalar view: skipped
+      if (binary_) {
+        pos_ += static_cast<std::size_t>(n) * entry_bytes;
+        return;
+      }
+      for (std::uint64_t i = 0; i < n; ++i) {
+        count(what);
+        for (long long c = 0; c < components; ++c) real("value");
+      }
+      return;
+    }
+    std::vector<Data_view>& views = elements ? element_views_ : node_views_;
+    const std::size_t size = elements ? mesh_.tetrahedra.size() : mesh_.points.size();
+    auto it = std::find_if(views.begin(), views.end(), [&](const Data_view& v) { return v.name == view; });
+    if (it == views.end()) {
+      check_memory(name_, 0, mesh_.points.size(), mesh_.tetrahedra.size(), sizeof(Point_3),
+                   sizeof(typename Mesh::Tetrahedron) + sizeof(int), node_views_.size() + (elements ? 0 : 1),
+                   element_views_.size() + (elements ? 1 : 0));
+      views.push_back({view, step, std::vector<double>(size, std::numeric_limits<double>::quiet_NaN())});
+      it = views.end() - 1;
+    } else if (it->step != step) { // another time step: the last one in the file is kept
+      it->step = step;
+      std::fill(it->values.begin(), it->values.end(), std::numeric_limits<double>::quiet_NaN());
+    }
+    std::vector<double>& values = it->values;
+    const auto where = [&](std::uint64_t tag) {
+      return section + " '" + view + "': " + what + " " + std::to_string(tag);
+    };
+    for (std::uint64_t i = 0; i < n; ++i) {
+      std::uint64_t tag;
+      double value;
+      if (binary_) {
+        const std::int32_t t = load_value<std::int32_t>(data_.data() + pos_, swap_);
+        if (t <= 0)
+          fail(section + " '" + view + "': " + what + " " + std::to_string(t) + " (tags start at 1)");
+        tag = static_cast<std::uint64_t>(t);
+        value = load_value<double>(data_.data() + pos_ + 4, swap_);
+      } else {
+        tag = count(what);
+        value = real("value");
+      }
+      if (!std::isfinite(value)) fail(where(tag) + ": the value is not finite");
+      if (elements) {
+        if (tag == 0 || tag > max_element_tag_) fail(where(tag) + " is not in $Elements");
+        const auto r = tetrahedra_of_tag(tag); // empty for an element that is not a tetrahedron
+        for (std::size_t k = r.first; k < r.second; ++k) values[k] = value;
+      } else {
+        const Index v = nodes_.find(tag);
+        if (v == nodes_.none) fail(where(tag) + " is not in $Nodes");
+        values[static_cast<std::size_t>(v)] = value;
+      }
+      if (binary_) pos_ += entry_bytes;
+    }
+  }
+
+  /// The values of a view read so far (NaN: no value yet) and the time step they belong to.
+  struct Data_view {
+    std::string name;
+    long long step;
+    std::vector<double> values;
+  };
+
   int version_ = 0;
   bool binary_ = false;
   std::size_t size_bytes_ = 8;
   bool has_entities_ = false;
   bool any_label_ = false;
+  bool has_nodes_ = false, has_elements_ = false;
+  bool tags_consecutive_ = true; // the element tags of the tetrahedra are first_tet_tag_ + index
+  std::uint64_t first_tet_tag_ = 0;
+  std::vector<std::uint64_t> tet_tags_; // otherwise, the element tag of each tetrahedron
+  std::uint64_t max_element_tag_ = 0;   // the largest element tag of $Elements (every type)
+  std::vector<Data_view> node_views_, element_views_;
   std::map<int, int> volume_physical_;
   std::vector<std::uint64_t> tags_;
   Gmsh_node_map<Index> nodes_;
