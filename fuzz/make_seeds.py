@@ -190,3 +190,39 @@ put("msh", "p41.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\
     "$EndPartitionedEntities\n$Nodes\n1 5 1 5\n3 5 0 5\n1\n2\n3\n4\n5\n" +
     "".join("%g %g %g\n" % p for p in P) + "$EndNodes\n$Elements\n2 2 1 2\n3 5 4 1\n1 1 2 3 4\n3 6 4 1\n2 2 3 4 5\n"
     "$EndElements\n")
+
+# ---- XDMF (.xdmf): inline XML only (a fuzz input is one stream; HDF5 references are refused there)
+xyz = " ".join("%g %g %g" % p for p in P)
+conn = " ".join("%d %d %d %d" % t for t in T)
+
+
+def xdmf(grid, version="3.0"):
+    return ("<?xml version=\"1.0\"?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"%s\" "
+            "xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n<Domain>\n%s</Domain>\n</Xdmf>\n" % (version, grid))
+
+
+geo = "<Geometry GeometryType=\"XYZ\"><DataItem Dimensions=\"5 3\" DataType=\"Float\" Precision=\"8\" " \
+      "Format=\"XML\">%s</DataItem></Geometry>\n" % xyz
+put("xdmf", "tet.xdmf", xdmf(
+    "<Grid Name=\"mesh\" GridType=\"Uniform\">\n<Topology TopologyType=\"Tetrahedron\" NumberOfElements=\"2\" "
+    "NodesPerElement=\"4\"><DataItem Dimensions=\"2 4\" DataType=\"Int\" Precision=\"8\" Format=\"XML\">%s"
+    "</DataItem></Topology>\n%s<Attribute Name=\"phi\" AttributeType=\"Scalar\" Center=\"Node\"><DataItem "
+    "Dimensions=\"5\" Format=\"XML\">0.5 1 2 3 4</DataItem></Attribute>\n<Attribute Name=\"label\" "
+    "AttributeType=\"Scalar\" Center=\"Cell\"><DataItem Dimensions=\"2\" DataType=\"Int\" Precision=\"4\" "
+    "Format=\"XML\">3 7</DataItem></Attribute>\n<Attribute Name=\"q\" Center=\"Cell\"><DataItem Dimensions=\"2 1\" "
+    "Format=\"XML\">0.25 1e-300</DataItem></Attribute>\n</Grid>\n" % (conn, geo)))
+put("xdmf", "mixed.xdmf", xdmf(
+    "<Grid Name=\"mesh\">\n<Topology TopologyType=\"Mixed\" NumberOfElements=\"5\"><DataItem Dimensions=\"24\" "
+    "NumberType=\"Int\" Format=\"XML\">6 0 1 2 3 4 0 1 2 2 2 3 4 16 1 3 0 1 2 6 1 2 3 4</DataItem></Topology>\n"
+    "%s<Attribute Name=\"gmsh:physical\" Center=\"Cell\"><DataItem Dimensions=\"5\" NumberType=\"UInt\" "
+    "Format=\"XML\">1 2 3 4 5</DataItem></Attribute>\n<Attribute Name=\"v\" AttributeType=\"Vector\" "
+    "Center=\"Node\"><DataItem Dimensions=\"5 3\" Format=\"XML\">%s</DataItem></Attribute>\n</Grid>\n" % (geo, xyz),
+    "2.0"))
+put("xdmf", "series.xdmf", xdmf(
+    "<Grid Name=\"TimeSeries\" GridType=\"Collection\" CollectionType=\"Temporal\">\n<Grid>"
+    "<xi:include xpointer=\"xpointer(//Grid[@Name=&quot;mesh&quot;]/*[self::Topology or self::Geometry])\" />"
+    "<Time Value=\"0.0\" /><Attribute Name=\"name_to_read\" Center=\"Cell\"><DataItem Dimensions=\"2\" "
+    "DataType=\"Int\" Format=\"XML\">5 6</DataItem></Attribute></Grid>\n</Grid>\n<Grid Name=\"mesh\" "
+    "GridType=\"Uniform\">%s<Topology Type=\"Tetrahedron\" BaseOffset=\"1\"><DataItem Dimensions=\"8\" "
+    "DataType=\"Int\" Format=\"XML\">%s</DataItem></Topology></Grid>\n"
+    % (geo, " ".join(str(v + 1) for t in T for v in t))))

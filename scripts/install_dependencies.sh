@@ -15,8 +15,9 @@ build=(g++ make cmake libcgal-dev libboost-dev libeigen3-dev libtbb-dev libgmp-d
 # (zero warnings in the reference manual); VTK's and meshio's Python bindings and gmsh for the
 # format interoperability tests; xvfb to render the pictures (scripts/make_pictures.sh) off screen;
 # Open MPI for the distributed octree (optional: without it the MPI tool commands, tests and
-# example are not built).
-test_only=(doxygen python3-vtk9 python3-meshio gmsh xvfb libopenmpi-dev openmpi-bin)
+# example are not built); HDF5 for the XDMF heavy data (optional: without it only inline-XML .xdmf
+# files are read and written) and h5py for meshio's XDMF files (interop_xdmf.py).
+test_only=(doxygen python3-vtk9 python3-meshio gmsh xvfb libopenmpi-dev openmpi-bin libhdf5-dev python3-h5py)
 case "${1:-}" in
   --build-only) packages=("${build[@]}") ;;
   "") packages=("${build[@]}" "${test_only[@]}") ;;

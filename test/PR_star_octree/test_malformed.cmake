@@ -197,6 +197,54 @@ case(o_cell_size.off "5 1\n${ov}3 0 1 2 3\n" ":7: .*4 vertex indices")
 case(o_coord_inf.off "5 1\n0 0 0\n1 inf 0\n" ":3: .*not finite")
 case(o_huge.off "1000000000000000 1000000000000000\n0 0 0\n" "1000000000000000|end of file")
 
+# ---------------------------------------------------------------- XDMF (.xdmf, and its .h5)
+# (-DHDF5=TRUE when prstar was built with HDF5; the .h5 files are written with h5py when present)
+set(xh "<?xml version=\"1.0\"?>\n<Xdmf Version=\"3.0\">\n<Domain>\n<Grid Name=\"mesh\" GridType=\"Uniform\">\n")
+set(xg "<Geometry GeometryType=\"XYZ\">\n<DataItem Dimensions=\"5 3\" Format=\"XML\">0 0 0 1 0 0 0 1 0 0 0 1 1 1 1</DataItem>\n</Geometry>\n")
+set(xe "</Grid>\n</Domain>\n</Xdmf>\n")
+case(x_truncated.xdmf "${xh}<Topology TopologyType=\"Tetrahedron\">\n<DataItem DataType=\"Int\" Format=\"XML\">0 1 2 3</DataItem>\n</Topology>\n${xg}</Grid>\n"
+     "unexpected end of file: element <Domain> of line 3 is not closed")
+case(x_ne_larger.xdmf "${xh}<Topology TopologyType=\"Tetrahedron\" NumberOfElements=\"3\">\n<DataItem DataType=\"Int\" Format=\"XML\">0 1 2 3</DataItem>\n</Topology>\n${xg}${xe}"
+     ":5: NumberOfElements=\"3\" but the data hold 4 values")
+case(x_dims_larger.xdmf "${xh}<Topology TopologyType=\"Tetrahedron\">\n<DataItem Dimensions=\"1000000000000 4\" DataType=\"Int\" Format=\"XML\">0 1 2 3</DataItem>\n</Topology>\n${xg}${xe}"
+     ":6: the topology: 4 values, 4000000000000 expected")
+case(x_index_range.xdmf "${xh}<Topology TopologyType=\"Tetrahedron\">\n<DataItem DataType=\"Int\" Format=\"XML\">0 1 2 5</DataItem>\n</Topology>\n${xg}${xe}"
+     ":6: cell 0: vertex index 5 out of range")
+case(x_hexahedron.xdmf "${xh}<Topology TopologyType=\"Hexahedron\">\n<DataItem DataType=\"Int\" Format=\"XML\">0 1 2 3 4 0 1 2</DataItem>\n</Topology>\n${xg}${xe}"
+     ":5: TopologyType 'Hexahedron' is not a tetrahedral mesh")
+set(xh5 "${xh}<Topology TopologyType=\"Tetrahedron\">\n<DataItem Dimensions=\"1 4\" DataType=\"Int\" Format=\"HDF\">@STEM@.h5:/t</DataItem>\n</Topology>\n<Geometry GeometryType=\"XYZ\">\n<DataItem Dimensions=\"@NV@ 3\" Format=\"HDF\">@STEM@.h5:/g</DataItem>\n</Geometry>\n${xe}")
+string(REPLACE "@STEM@" "x_missing" content "${xh5}")
+string(REPLACE "@NV@" "4" content "${content}")
+if(HDF5)
+  case(x_missing_h5.xdmf "${content}" ":9: HDF5 file '.*x_missing.h5' \\(of x_missing.h5:/g\\): no such file")
+else()
+  case(x_missing_h5.xdmf "${content}" "x_missing_h5.xdmf: this build of the package has no HDF5 support")
+endif()
+execute_process(COMMAND /usr/bin/python3 -c "import h5py" RESULT_VARIABLE no_h5py OUTPUT_QUIET ERROR_QUIET)
+if(HDF5 AND no_h5py EQUAL 0)
+  # points of 2 coordinates where Dimensions says 3; a dataset of 4 billion points (never written: a
+  # tiny file), refused by the memory check before anything is allocated
+  execute_process(COMMAND /usr/bin/python3 -c "
+import h5py, numpy as np
+with h5py.File('${WORK}/x_shape.h5', 'w') as f:
+    f['g'] = np.zeros((4, 2)); f['t'] = np.array([[0, 1, 2, 3]], dtype=np.int32)
+with h5py.File('${WORK}/x_huge.h5', 'w') as f:
+    f.create_dataset('g', (4000000000, 3), dtype='f8', chunks=(1024, 3))
+    f.create_dataset('t', (1, 4), dtype='i8', chunks=(1, 4))
+" RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    fail(x_h5 "h5py could not write the .h5 files")
+  endif()
+  string(REPLACE "@STEM@" "x_shape" content "${xh5}")
+  string(REPLACE "@NV@" "4" content "${content}")
+  case(x_shape.xdmf "${content}" ":9: the geometry: the dataset x_shape.h5:/g has dimensions 4 x 2 \\(8 values\\), Dimensions=\"4 3\" announces 12")
+  string(REPLACE "@STEM@" "x_huge" content "${xh5}")
+  string(REPLACE "@NV@" "4000000000" content "${content}")
+  case(x_huge.xdmf "${content}" ":8: the mesh announced \\(4000000000 vertices, 1 tetrahedra\\) needs about .* refused before reading it")
+else()
+  message(STATUS "XDMF cases with .h5 files: skipped (prstar without HDF5, or no h5py)")
+endif()
+
 # ---------------------------------------------------------------- counts that fit the index type but lie
 # (10^9 vertices announced in a tiny file: reserving for them would exceed the 2 GB address space
 # given by prlimit and end in "out of memory" instead of the expected message)
