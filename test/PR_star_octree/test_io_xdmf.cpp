@@ -67,6 +67,7 @@ static std::string json_string(const std::string& s) {
 }
 
 static std::string num(double x) {
+  if (x == 0 && std::signbit(x)) return "-0.0"; // not "-0", an integer for JSON readers
   char b[40];
   std::snprintf(b, sizeof b, "%.17g", x);
   return b;
