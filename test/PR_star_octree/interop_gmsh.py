@@ -14,11 +14,20 @@ TEST_IO_GMSH is the test program (its --dump FILE prints what our reader read as
    labels) and by meshio (same counts, labels and physical names).
 3. .meshb: files written by meshio are read by us, ours (versions 1-4) are read by meshio.
 4. .msh files written by meshio (gmsh22 and gmsh 4.1, ASCII and binary) are read by us.
+5. Point and cell data: our files (every variant, the tetrahedra reordered so that the two labels
+   alternate, two point arrays and two cell arrays) are read by meshio (exactly one tetra block per
+   label, the arrays equal to ours, the cell values grouped by label in the order of the mesh) and
+   by gmsh (the file read without error, every view kept, its values equal to ours by node tag =
+   vertex index + 1 and element tag = tetrahedron index + 1); meshio's files with point and cell
+   data (every variant) are read by us with the same arrays.  meshio 5.0 refuses the binary data
+   whose tags do not run 1, 2, ... in the order of the file (our 4.1 binary file with alternating
+   labels): that refusal is checked, and the same file with grouped labels is read.
 Exits 77 (skipped) when neither gmsh nor meshio is available; parts needing the missing one are
 skipped with a message.
 """
 import collections
 import json
+import math
 import os
 import re
 import shutil
@@ -254,6 +263,133 @@ if reference:
                           (out, mi["labels"], ours["labels"]))
                     print("meshio's %s: ours %d vertices %d tetrahedra labels %s" %
                           (out, ours["vertices"], ours["tetrahedra"], ours["labels"]))
+
+
+
+# 5. point and cell data
+def same_values(a, b):
+    return len(a) == len(b) and all(float(x) == float(y) for x, y in zip(a, b))
+
+
+def gmsh_views(path):
+    """The views gmsh keeps when it reads `path`: {name: {tag: value}} for node and element data,
+    from gmsh's own 4.1 ASCII output of each view."""
+    with open(path + ".views.geo", "w") as f:
+        f.write('Merge "%s";\nPostProcessing.SaveMesh = 0;\nMesh.MshFileVersion = 4.1;\nMesh.Binary = 0;\n'
+                'For i In {0:PostProcessing.NbViews-1}\n  Save View[i] Sprintf("%s.view%%g.msh", i);\nEndFor\n'
+                'Exit;\n' % (path, path))
+    r = subprocess.run([gmsh, "-nopopup", path + ".views.geo", "-"], capture_output=True, text=True, timeout=300)
+    check(r.returncode == 0 and "Error" not in r.stdout + r.stderr,
+          "gmsh could not read the views of %s: %s" % (path, (r.stdout + r.stderr)[-500:]))
+    views = {"NodeData": {}, "ElementData": {}}
+    k = 0
+    while os.path.exists("%s.view%d.msh" % (path, k)):
+        lines = open("%s.view%d.msh" % (path, k)).read().split("\n")
+        for i, line in enumerate(lines):
+            if line in ("$NodeData", "$ElementData"):
+                name = lines[i + 2].strip('"')
+                j = i + 1 + int(lines[i + 1]) + 1
+                j += int(lines[j]) + 1
+                nint = int(lines[j])
+                n = int(lines[j + 3])
+                values = views[line[1:]].setdefault(name, {})
+                for entry in lines[j + 1 + nint:j + 1 + nint + n]:
+                    tag, value = entry.split()[:2]
+                    values[int(tag)] = float(value)
+        k += 1
+    return views
+
+
+if reference and meshio:
+    for opts in ([], ["--binary"], ["--msh22"], ["--msh22", "--binary"]):
+        for interleave in (True, False):
+            if not interleave and opts != ["--binary"]:
+                continue
+            out = "data%s%s.msh" % ("".join(opts).replace("-", "_"), "_interleaved" if interleave else "")
+            convert(reference, out, *(opts + ["--add-data"] + (["--interleave"] if interleave else [])))
+            ours = dump(out)
+            what = "our " + out
+            if ours is None:
+                continue
+            check(sorted(ours["point_data"]) == ["p index", "px"] and sorted(ours["cell_data"]) == ["cq", "ct"],
+                  "%s: we read back the arrays %s %s" % (what, list(ours["point_data"]), list(ours["cell_data"])))
+            labels = ours["tetrahedron_labels"]
+            if interleave:
+                check(len(labels) > 2 and labels[0] != labels[1], "%s: the labels do not alternate" % what)
+            try:
+                mi = meshio.read(out, file_format="gmsh")
+            except (Exception, SystemExit) as e:  # noqa: BLE001 (ReadError, or an exit when it guesses)
+                if interleave and opts == ["--binary"]:
+                    print("%s: meshio refuses the binary data of alternating labels, as documented (%s)" %
+                          (what, type(e).__name__))
+                    check(True, "")
+                else:
+                    check(False, "%s: meshio cannot read it: %r" % (what, e))
+                mi = None
+            if interleave and opts == ["--binary"] and mi is not None:
+                check(False, "%s: meshio read binary data whose tags are not in file order" % what)
+                mi = None
+            if mi is not None:
+                tetra = [k for k, b in enumerate(mi.cells) if b.type == "tetra"]
+                if "--msh22" not in opts:
+                    check(len(tetra) == len(set(labels)), "%s: meshio sees %d tetra blocks for the %d labels" %
+                          (what, len(tetra), len(set(labels))))
+                for name in ("px", "p index"):
+                    check(same_values(mi.point_data.get(name, []), ours["point_data"].get(name, [None])),
+                          "%s: meshio's point data %s differs from ours" % (what, name))
+                # meshio lists the tetrahedra in the order of the file: grouped by label in 4.1
+                physical = np.concatenate([np.asarray(mi.cell_data["gmsh:physical"][k]) for k in tetra])
+                for name in ("cq", "ct"):
+                    theirs = np.concatenate([np.asarray(mi.cell_data[name][k]) for k in tetra])
+                    if "--msh22" in opts:
+                        expected = ours["cell_data"][name]
+                        check(list(physical) == labels, "%s: meshio's labels are not in the order of the mesh" % what)
+                    else:
+                        expected = [v for l in sorted(set(labels), key=labels.index)
+                                    for v, l2 in zip(ours["cell_data"][name], labels) if l2 == l]
+                    check(same_values(theirs, expected), "%s: meshio's cell data %s differs from ours" % (what, name))
+            if gmsh:
+                nodes, elements, conv = gmsh_reports(out)
+                check(nodes == ours["vertices"] and elements == ours["tetrahedra"],
+                      "%s: gmsh reports %s nodes %s elements, we wrote %d/%d" %
+                      (what, nodes, elements, ours["vertices"], ours["tetrahedra"]))
+                views = gmsh_views(out)
+                for kind, key in (("NodeData", "point_data"), ("ElementData", "cell_data")):
+                    for name, values in ours[key].items():
+                        got = views[kind].get(name, {})
+                        # gmsh writes 16 significant digits: equal within a few units in the last place
+                        check(len(got) == len(values) and
+                              all(math.isclose(got.get(i + 1, math.inf), v, rel_tol=1e-15) for i, v in enumerate(values)),
+                              "%s: gmsh's view %s (%s) differs from ours: %d values" % (what, name, kind, len(got)))
+            print("%s: checked" % what)
+
+    # meshio's files with point and cell data, read by us
+    m = meshio.read(reference)
+    key = lambda p: (float(p[0]), float(p[1]), float(p[2]))
+    temp = m.points[:, 0] / 3 + m.points[:, 1] * 7 - np.arange(len(m.points)) * 1e-3
+    q = [np.arange(len(b.data), dtype=float) / 7 + k for k, b in enumerate(m.cells)]
+    cd = {k: v for k, v in m.cell_data.items() if k in ("gmsh:physical", "gmsh:geometrical")}
+    cd["q"] = q
+    pd = {"temp": temp}
+    if "gmsh:dim_tags" in m.point_data:
+        pd["gmsh:dim_tags"] = m.point_data["gmsh:dim_tags"]
+    mm = meshio.Mesh(m.points, m.cells, point_data=pd, cell_data=cd, field_data=m.field_data)
+    of_point = {key(p): float(v) for p, v in zip(m.points, temp)}
+    tet_q = list(np.concatenate([q[k] for k, b in enumerate(m.cells) if b.type == "tetra"]))
+    for fmt in ("gmsh22", "gmsh"):
+        for binary in (False, True):
+            out = "meshio_data_%s_%s.msh" % (fmt, "bin" if binary else "ascii")
+            meshio.write(out, mm, file_format=fmt, binary=binary)
+            ours = dump(out)
+            what = "meshio's " + out
+            if ours is None:
+                continue
+            got = ours["point_data"].get("temp", [])
+            check(len(got) == len(ours["points"]) and
+                  all(of_point.get(key(p)) == v for p, v in zip(ours["points"], got)),
+                  "%s: our point data temp differs from meshio's" % what)
+            check(same_values(ours["cell_data"].get("q", []), tet_q), "%s: our cell data q differs from meshio's" % what)
+            print("%s: ours point data %s, cell data %s" % (what, list(ours["point_data"]), list(ours["cell_data"])))
 
 print("interop_gmsh: %d checks, %d failures" % (checks, len(failures)))
 sys.exit(1 if failures or checks == 0 else 0)

@@ -12,10 +12,11 @@
 //
 // Usage: test_io_gmsh [generated_data_dir] [shared_data_dir]     the tests
 //        test_io_gmsh --dump FILE          one JSON line: what the reader of FILE's extension read
-//                                          (counts, labels, names, skipped cells, data arrays)
+//                                          (counts, labels, names, skipped cells, points, data
+//                                          arrays)
 //        test_io_gmsh --convert IN OUT [--msh22] [--binary] [--meshb-version V] [--interleave]
 //                     [--add-data]         reads IN, writes OUT (by extension) with the options;
-//                                          --interleave reorders the tetrahedra 0, n/2, 1, ...,
+//                                          --interleave reorders the tetrahedra 0, n-1, 1, ...,
 //                                          --add-data replaces the data arrays by 2 point-data
 //                                          arrays (px, "p index") and 2 cell-data arrays (cq, ct)
 //        test_io_gmsh --bench CUBES DIR    speed: a CUBES^3 x 6 tetrahedra grid written as binary
@@ -237,6 +238,11 @@ static int dump(const std::string& file) {
     }
     std::cout << "}";
   };
+  std::cout << ", \"points\": [";
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    std::cout << (i ? ", [" : "[") << m.points[i].x() << ", " << m.points[i].y() << ", " << m.points[i].z()
+              << "]";
+  std::cout << "]";
   arrays("point_data", m.point_data);
   arrays("cell_data", m.cell_data);
   double sum = 0;
@@ -245,13 +251,13 @@ static int dump(const std::string& file) {
   return 0;
 }
 
-/// Reorders the tetrahedra (and their labels) as 0, n/2, 1, n/2 + 1, ...: a mesh whose labels
+/// Reorders the tetrahedra (and their labels) as 0, n - 1, 1, n - 2, ...: a mesh whose labels
 /// come in two runs gets them interleaved.
-static void interleave_halves(Mesh& m) {
-  const std::size_t n = m.tetrahedra.size(), h = (n + 1) / 2;
+static void interleave_ends(Mesh& m) {
+  const std::size_t n = m.tetrahedra.size();
   Mesh r = m;
   for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t from = k % 2 == 0 ? k / 2 : h + k / 2;
+    const std::size_t from = k % 2 == 0 ? k / 2 : n - 1 - k / 2;
     r.tetrahedra[k] = m.tetrahedra[from];
     if (!m.tetrahedron_labels.empty()) r.tetrahedron_labels[k] = m.tetrahedron_labels[from];
   }
@@ -291,7 +297,7 @@ static int convert(int argc, char** argv) {
   Mesh m;
   try {
     IO::read_tetrahedral_mesh(in, m);
-    if (interleave) interleave_halves(m);
+    if (interleave) interleave_ends(m);
     if (add_data) add_test_data(m);
     if (IO::internal::lower_extension(out) == "msh")
       write_gmsh_variant(out, m, options);
