@@ -191,6 +191,32 @@ put("msh", "p41.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\
     "".join("%g %g %g\n" % p for p in P) + "$EndNodes\n$Elements\n2 2 1 2\n3 5 4 1\n1 1 2 3 4\n3 6 4 1\n2 2 3 4 5\n"
     "$EndElements\n")
 
+
+# $NodeData and $ElementData: views split over sections, two time steps, a vector view, element data on a
+# triangle and on tetrahedra out of tag order; the binary ones with 4-byte tags after a text header
+def msh_data(tag_line, binary, endian="<"):
+    i = lambda *v: struct.pack(endian + "%di" % len(v), *v)
+    d = lambda *v: struct.pack(endian + "%dd" % len(v), *v)
+
+    def view(section, name, step, comps, entries):
+        head = ("$%s\n1\n\"%s\"\n1\n0.5\n3\n%d\n%d\n%d\n" % (section, name, step, comps, len(entries))).encode()
+        if binary:
+            body = b"".join(i(t) + d(*v) for t, v in entries) + b"\n"
+        else:
+            body = "".join("%d %s\n" % (t, " ".join(repr(x) for x in v)) for t, v in entries).encode()
+        return head + body + ("$End%s\n" % section).encode()
+
+    nodes = [(TAGS[k], (0.1 * k,)) for k in range(5)]
+    return (view("NodeData", "T", 0, 1, nodes[:3]) + view("NodeData", "T", 0, 1, nodes[3:]) +
+            view("NodeData", "T", 1, 1, nodes[::-1]) + view("NodeData", "V", 0, 3, [(10, (1.0, 2.0, 3.0))]) +
+            view("ElementData", "E", 0, 1, [(t, (v,)) for t, v in zip(tag_line, (0.5, 1e-300, -2.0, 7.25))]))
+
+
+put("msh", "d41.msh", open(os.path.join(out, "msh", "a41.msh"), "rb").read() + msh_data((3, 1, 2, 4), False))
+put("msh", "d22.msh", open(os.path.join(out, "msh", "a22.msh"), "rb").read() + msh_data((4, 2, 3), False))
+put("msh", "d41b.msh", msh41_binary("<") + msh_data((2, 3, 1), True))
+put("msh", "d22be.msh", msh22_binary(">") + msh_data((1, 2, 3), True, ">"))
+
 # ---- XDMF (.xdmf): inline XML only (a fuzz input is one stream; HDF5 references are refused there)
 xyz = " ".join("%g %g %g" % p for p in P)
 conn = " ".join("%d %d %d %d" % t for t in T)
