@@ -23,6 +23,7 @@
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -186,6 +187,274 @@ void test_validity_hand_made() {
   CHECK(rf.valid);
   CHECK_EQUAL(rf.inverted, std::size_t(0));
   CHECK_EQUAL(rf.negative, std::size_t(6));
+}
+
+// The problems of check_validity (problems_output) against brute force: the orientation of every
+// input tetrahedron with CGAL::orientation (the minority sign, the negative one on a tie), the
+// triangles counted with a map over all faces, the vertex links checked to be spheres or discs
+// from the faces opposite each vertex, the unreferenced vertices with a mark array.
+std::vector<P::Validity_problem> brute_force_problems(const std::vector<Point>& pts,
+                                                      const std::vector<Tet>& tets) {
+  using Problem = P::Validity_problem;
+  using Kind = P::Validity_problem_kind;
+  std::vector<Problem> r;
+  std::vector<CGAL::Orientation> sign(tets.size());
+  std::size_t positive = 0, negative = 0;
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const Tet& c = tets[t];
+    sign[t] = CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]);
+    positive += sign[t] == CGAL::POSITIVE;
+    negative += sign[t] == CGAL::NEGATIVE;
+  }
+  const CGAL::Orientation minority = negative <= positive ? CGAL::NEGATIVE : CGAL::POSITIVE;
+  auto tetrahedron = [&](std::size_t t, Kind kind) {
+    Problem p;
+    p.kind = kind;
+    p.tetrahedron = t;
+    for (int k = 0; k < 4; ++k) p.vertices[k] = tets[t][k];
+    r.push_back(p);
+  };
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    if (sign[t] == CGAL::COPLANAR) tetrahedron(t, Kind::FLAT_TETRAHEDRON);
+    if (sign[t] == minority && std::min(positive, negative) > 0) tetrahedron(t, Kind::INVERTED_TETRAHEDRON);
+  }
+  std::map<std::array<std::uint32_t, 3>, std::vector<std::size_t>> faces;
+  std::vector<std::vector<std::array<std::uint32_t, 3>>> links(pts.size());
+  std::vector<char> used(pts.size(), 0);
+  for (std::size_t t = 0; t < tets.size(); ++t)
+    for (int i = 0; i < 4; ++i) {
+      std::array<std::uint32_t, 3> f{{tets[t][(i + 1) % 4], tets[t][(i + 2) % 4], tets[t][(i + 3) % 4]}};
+      std::sort(f.begin(), f.end());
+      faces[f].push_back(t);
+      links[tets[t][i]].push_back(f);
+      used[tets[t][i]] = 1;
+    }
+  for (const auto& f : faces)
+    if (f.second.size() > 2) {
+      Problem p;
+      p.kind = Kind::NONMANIFOLD_TRIANGLE;
+      for (int k = 0; k < 3; ++k) p.vertices[k] = f.first[k];
+      p.tetrahedra = f.second; // increasing
+      r.push_back(p);
+    }
+  for (std::uint32_t v = 0; v < pts.size(); ++v) {
+    Problem p;
+    p.vertices[0] = v;
+    if (!used[v]) {
+      p.kind = Kind::UNREFERENCED_VERTEX;
+      r.push_back(p);
+      continue;
+    }
+    // The link: every edge in one or two triangles, connected through edges, and either closed
+    // with Euler characteristic 2 or with one boundary loop and Euler characteristic 1.
+    const auto& link = links[v];
+    std::map<std::array<std::uint32_t, 2>, std::vector<std::size_t>> edges;
+    std::set<std::uint32_t> vertices;
+    for (std::size_t i = 0; i < link.size(); ++i) {
+      const auto& f = link[i];
+      for (auto e : {std::array<std::uint32_t, 2>{{f[0], f[1]}}, std::array<std::uint32_t, 2>{{f[1], f[2]}},
+                     std::array<std::uint32_t, 2>{{f[0], f[2]}}})
+        edges[e].push_back(i);
+      vertices.insert(f.begin(), f.end());
+    }
+    bool manifold = true;
+    std::vector<std::size_t> parent(link.size());
+    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+    std::map<std::uint32_t, int> boundary_degree;
+    std::size_t boundary_edges = 0;
+    for (const auto& e : edges) {
+      manifold = manifold && e.second.size() <= 2;
+      for (std::size_t i : e.second) parent[find(parent, i)] = find(parent, e.second.front());
+      if (e.second.size() == 1) {
+        ++boundary_edges;
+        ++boundary_degree[e.first[0]];
+        ++boundary_degree[e.first[1]];
+      }
+    }
+    std::size_t components = 0;
+    for (std::size_t i = 0; i < parent.size(); ++i) components += find(parent, i) == i;
+    const long long euler = (long long)vertices.size() - (long long)edges.size() + (long long)link.size();
+    for (const auto& d : boundary_degree) manifold = manifold && d.second == 2;
+    // a single boundary loop: as many edges as vertices, and (degrees all 2) one cycle when the
+    // loop's vertices are connected through its edges
+    if (boundary_edges > 0) {
+      std::map<std::uint32_t, std::uint32_t> loop_parent;
+      for (const auto& d : boundary_degree) loop_parent[d.first] = d.first;
+      std::function<std::uint32_t(std::uint32_t)> root = [&](std::uint32_t x) {
+        return loop_parent[x] == x ? x : loop_parent[x] = root(loop_parent[x]);
+      };
+      for (const auto& e : edges)
+        if (e.second.size() == 1) loop_parent[root(e.first[0])] = root(e.first[1]);
+      std::size_t loops = 0;
+      for (const auto& d : boundary_degree) loops += root(d.first) == d.first;
+      manifold = manifold && loops == 1 && euler == 1;
+    } else
+      manifold = manifold && euler == 2;
+    manifold = manifold && components == 1;
+    if (!manifold) {
+      p.kind = Kind::NONMANIFOLD_VERTEX;
+      r.push_back(p);
+    }
+  }
+  std::sort(r.begin(), r.end());
+  return r;
+}
+
+std::vector<P::Validity_problem> reported_problems(const Octree& tree, bool parallel,
+                                                   P::Validity_result* result) {
+  std::vector<P::Validity_problem> problems;
+  const auto np = params::problems_output(std::back_inserter(problems));
+  *result = parallel ? P::check_validity<CGAL::Parallel_if_available_tag>(tree, np)
+                     : P::check_validity<CGAL::Sequential_tag>(tree, np);
+  return problems;
+}
+
+void test_validity_problems() {
+  using Kind = P::Validity_problem_kind;
+  // The Kuhn cube of test_validity_hand_made, listed positively, and planted defects.
+  std::vector<Point> pts;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) pts.emplace_back(i, j, k);
+  auto id = [](int i, int j, int k) { return std::uint32_t(i + 2 * j + 4 * k); };
+  std::vector<Tet> tets;
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const auto& p : perms) {
+    int x[3] = {0, 0, 0};
+    Tet c;
+    c[0] = id(0, 0, 0);
+    for (int s = 0; s < 3; ++s) {
+      x[p[s]] = 1;
+      c[s + 1] = id(x[0], x[1], x[2]);
+    }
+    if (CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]) == CGAL::NEGATIVE)
+      std::swap(c[2], c[3]);
+    tets.push_back(c);
+  }
+  auto add_point = [&](double x, double y, double z) {
+    pts.emplace_back(x, y, z);
+    return std::uint32_t(pts.size() - 1);
+  };
+  // two unreferenced vertices, numbered among the others
+  const std::uint32_t lonely1 = add_point(3, 3, 3);
+  // one inverted tetrahedron (listed negatively), apart
+  const std::uint32_t a = add_point(5, 0, 0), a1 = add_point(6, 0, 0), a2 = add_point(5, 1, 0),
+                      a3 = add_point(5, 0, 1);
+  const std::size_t inverted_tet = tets.size();
+  tets.push_back(Tet{{a, a2, a1, a3}});
+  // one flat tetrahedron, apart
+  const std::uint32_t f = add_point(10, 0, 0), f1 = add_point(11, 0, 0), f2 = add_point(10, 1, 0),
+                      f3 = add_point(11, 1, 0);
+  const std::size_t flat_tet = tets.size();
+  tets.push_back(Tet{{f, f1, f2, f3}});
+  const std::uint32_t lonely2 = add_point(-3, 2, 7);
+  // a triangle (0, 1, 3) of the cube's bottom face in three tetrahedra: two more below it
+  const std::uint32_t d = add_point(0.3, 0.3, -1), d1 = add_point(0.2, 0.4, -2);
+  for (std::uint32_t apex : {d, d1}) {
+    Tet c{{id(0, 0, 0), id(1, 0, 0), id(1, 1, 0), apex}};
+    if (CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]) == CGAL::NEGATIVE)
+      std::swap(c[2], c[3]);
+    tets.push_back(c);
+  }
+  // a fin, apart: the triangle (g, g1, g2) in three tetrahedra, two of them on the same side
+  const std::uint32_t g = add_point(20, 0, 0), g1 = add_point(21, 0, 0), g2 = add_point(20, 1, 0),
+                      g3 = add_point(20, 0, 1), g4 = add_point(20, 0, -1), g5 = add_point(21, 1, 1);
+  for (Tet c : {Tet{{g, g1, g2, g3}}, Tet{{g, g2, g1, g4}}, Tet{{g, g1, g2, g5}}}) {
+    if (CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]) == CGAL::NEGATIVE)
+      std::swap(c[2], c[3]);
+    tets.push_back(c);
+  }
+  // a bow tie, apart: two tetrahedra sharing only the vertex h (a non-manifold vertex)
+  const std::uint32_t h = add_point(30, 0, 0);
+  for (double s : {1.0, -1.0}) {
+    Tet c{{h, add_point(30 + s, 0, 0), add_point(30, s, 0), add_point(30, 0, s)}};
+    if (CGAL::orientation(pts[c[0]], pts[c[1]], pts[c[2]], pts[c[3]]) == CGAL::NEGATIVE)
+      std::swap(c[2], c[3]);
+    tets.push_back(c);
+  }
+
+  const auto expected = brute_force_problems(pts, tets);
+  // the planted defects are in the brute force's list (it means something)
+  auto has = [&](Kind kind, std::size_t tetrahedron, std::size_t vertex) {
+    return std::any_of(expected.begin(), expected.end(), [&](const P::Validity_problem& p) {
+      return p.kind == kind && p.tetrahedron == tetrahedron && p.vertices[0] == vertex;
+    });
+  };
+  CHECK(has(Kind::INVERTED_TETRAHEDRON, inverted_tet, a));
+  CHECK(has(Kind::FLAT_TETRAHEDRON, flat_tet, f));
+  CHECK(has(Kind::NONMANIFOLD_TRIANGLE, P::Validity_problem::no_id, id(0, 0, 0)));
+  CHECK(has(Kind::NONMANIFOLD_TRIANGLE, P::Validity_problem::no_id, g));
+  CHECK(has(Kind::NONMANIFOLD_VERTEX, P::Validity_problem::no_id, h));
+  CHECK(has(Kind::UNREFERENCED_VERTEX, P::Validity_problem::no_id, lonely1));
+  CHECK(has(Kind::UNREFERENCED_VERTEX, P::Validity_problem::no_id, lonely2));
+  CHECK_EQUAL(
+      std::count_if(expected.begin(), expected.end(),
+                    [](const P::Validity_problem& p) { return p.kind == Kind::INVERTED_TETRAHEDRON; }),
+      std::ptrdiff_t(1));
+
+  for (std::size_t kv : {std::size_t(1), std::size_t(3), std::size_t(8), Octree::infinite_bucket_size}) {
+    const Octree tree(P::make_input(pts, tets), params::bucket_size(kv));
+    P::Validity_result rs, rp;
+    const auto seq = reported_problems(tree, false, &rs);
+    const auto par = reported_problems(tree, true, &rp);
+    CHECK_MSG(seq == expected, "k_v = " + std::to_string(kv) + ": the problems are not the brute force's");
+    CHECK_MSG(par == seq, "k_v = " + std::to_string(kv) + ": sequential and parallel problems differ");
+    CHECK(!rs.valid);
+    CHECK_EQUAL(rs.unreferenced_vertices, std::size_t(2));
+    CHECK_EQUAL(rp.unreferenced_vertices, std::size_t(2));
+    // the counts agree with the lists, and with a run without the list
+    auto count = [&](Kind kind) {
+      return std::size_t(std::count_if(seq.begin(), seq.end(),
+                                       [&](const P::Validity_problem& p) { return p.kind == kind; }));
+    };
+    CHECK_EQUAL(count(Kind::INVERTED_TETRAHEDRON), rs.inverted);
+    CHECK_EQUAL(count(Kind::FLAT_TETRAHEDRON), rs.degenerate);
+    CHECK_EQUAL(count(Kind::NONMANIFOLD_TRIANGLE), rs.nonmanifold_triangles);
+    CHECK_EQUAL(count(Kind::NONMANIFOLD_VERTEX), rs.nonmanifold_vertices);
+    CHECK_EQUAL(count(Kind::UNREFERENCED_VERTEX), rs.unreferenced_vertices);
+    const auto plain = P::check_validity(tree);
+    CHECK_EQUAL(plain.unreferenced_vertices, rs.unreferenced_vertices);
+    CHECK_EQUAL(plain.nonmanifold_vertices, rs.nonmanifold_vertices);
+    CHECK_EQUAL(plain.inverted, rs.inverted);
+  }
+  // the same through the array overload
+  {
+    std::vector<P::Validity_problem> problems;
+    P::check_validity(pts, tets, params::bucket_size(2).problems_output(std::back_inserter(problems)));
+    CHECK(problems == expected);
+  }
+
+  // The cube and two unreferenced vertices: a warning, the mesh stays valid.
+  {
+    std::vector<Point> cube_pts(pts.begin(), pts.begin() + 8);
+    cube_pts.emplace_back(4, 4, 4);
+    cube_pts.emplace_back(-4, 4, 4);
+    const std::vector<Tet> cube(tets.begin(), tets.begin() + 6);
+    std::vector<P::Validity_problem> problems;
+    const auto r = P::check_validity(cube_pts, cube, params::problems_output(std::back_inserter(problems)));
+    CHECK(r.valid);
+    CHECK_EQUAL(r.unreferenced_vertices, std::size_t(2));
+    CHECK_EQUAL(problems.size(), std::size_t(2));
+    CHECK(problems == brute_force_problems(cube_pts, cube));
+  }
+  // A tie (one positive, one negative tetrahedron): the negative one is reported.
+  {
+    const std::vector<Tet> tie{{tets[inverted_tet], Tet{{a, a1, a2, a3}}}};
+    std::vector<P::Validity_problem> problems;
+    const auto r = P::check_validity(pts, tie, params::problems_output(std::back_inserter(problems)));
+    CHECK_EQUAL(r.inverted, std::size_t(1));
+    const auto inverted = std::find_if(problems.begin(), problems.end(), [](const P::Validity_problem& p) {
+      return p.kind == Kind::INVERTED_TETRAHEDRON;
+    });
+    CHECK(inverted != problems.end() && inverted->tetrahedron == 0);
+    // all listed negatively (the other convention), the positive one is the minority
+    const std::vector<Tet> mostly_negative{{Tet{{a, a1, a2, a3}}, tets[inverted_tet], Tet{{a1, a, a2, a3}}}};
+    problems.clear();
+    P::check_validity(pts, mostly_negative, params::problems_output(std::back_inserter(problems)));
+    CHECK(problems == brute_force_problems(pts, mostly_negative));
+    CHECK(!problems.empty() && problems.front().kind == Kind::INVERTED_TETRAHEDRON &&
+          problems.front().tetrahedron == 0);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -756,6 +1025,7 @@ void test_mesh(const std::string& file, bool targets) {
 int main(int argc, char** argv) {
   const prstar_test::Data_folders data(argc, argv);
   test_validity_hand_made();
+  test_validity_problems();
   test_exact_predicate_rejects();
   test_link_condition_rejects_single_tetrahedron();
   test_link_condition_rejects_ring();

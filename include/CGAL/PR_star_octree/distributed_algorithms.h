@@ -275,11 +275,15 @@ Vertex_type_counts compute_curvature(const Distributed_octree_3<GT>& tree, const
 /// `check_validity()` over the ranks (collective): the same result as on one process.  The
 /// orientations are checked by the owners of the tetrahedra; the boundary triangles (their global
 /// vertex ids: a surface, much smaller than the mesh) are gathered on rank 0 for the connected
-/// components.
+/// components.  Only the counts: the named parameter `problems_output` (the list of the problems) is
+/// one-process only, refused here at compile time.
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT,
           class NP = parameters::Default_named_parameters>
 Validity_result check_validity(const Distributed_octree_3<GT>& tree,
                                const NP& np = parameters::default_values()) {
+  static_assert(std::is_same<decltype(parameters::get_parameter(np, internal_np::problems_output)),
+                             CGAL::internal_np::Param_not_found>::value,
+                "check_validity(Distributed_octree_3): problems_output is one-process only");
   using Octree = typename Distributed_octree_3<GT>::Octree;
   using Index = typename Octree::Index;
   const Octree& octree = tree.local_octree();
@@ -292,10 +296,11 @@ Validity_result check_validity(const Distributed_octree_3<GT>& tree,
 
   using Triangle = std::array<std::uint64_t, 3>;
   struct Leaf_result {
-    std::size_t positive = 0, negative = 0, degenerate = 0, nonmanifold_vertices = 0;
+    std::size_t positive = 0, negative = 0, degenerate = 0, nonmanifold_vertices = 0,
+                unreferenced_vertices = 0;
     std::vector<Triangle> boundary;
   };
-  std::uint64_t sums[4] = {0, 0, 0, 0};
+  std::uint64_t sums[5] = {0, 0, 0, 0, 0};
   std::vector<Triangle> boundary;
   auto orientation = octree.geom_traits().orientation_3_object();
   const Vertex_classifier<Octree> classifier(np);
@@ -316,8 +321,11 @@ Validity_result check_validity(const Distributed_octree_3<GT>& tree,
           else
             ++lr.negative;
         }
-        for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v)
-          lr.nonmanifold_vertices += tree.owns_vertex(v) && local.vertex_type(v) == Vertex_type::NONMANIFOLD;
+        for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v) {
+          if (!tree.owns_vertex(v)) continue;
+          lr.nonmanifold_vertices += local.vertex_type(v) == Vertex_type::NONMANIFOLD;
+          lr.unreferenced_vertices += local.vertex_type(v) == Vertex_type::UNREFERENCED;
+        }
         for (std::size_t f = 0; f < local.number_of_triangles(); ++f)
           if (local.owns_triangle(f) && local.triangle_tetrahedra(f).size() == 1 &&
               tree.counts_simplex(local.triangle(f))) {
@@ -333,15 +341,17 @@ Validity_result check_validity(const Distributed_octree_3<GT>& tree,
         sums[1] += lr.negative;
         sums[2] += lr.degenerate;
         sums[3] += lr.nonmanifold_vertices;
+        sums[4] += lr.unreferenced_vertices;
         boundary.insert(boundary.end(), lr.boundary.begin(), lr.boundary.end());
       },
       internal::Progress_reporter<NP>(np));
-  std::uint64_t global[4];
-  MPI_Allreduce(sums, global, 4, MPI_UINT64_T, MPI_SUM, tree.communicator());
+  std::uint64_t global[5];
+  MPI_Allreduce(sums, global, 5, MPI_UINT64_T, MPI_SUM, tree.communicator());
   r.positive = global[0];
   r.negative = global[1];
   r.degenerate = global[2];
   r.nonmanifold_vertices = global[3];
+  r.unreferenced_vertices = global[4];
   r.inverted = (std::min)(r.positive, r.negative);
 
   // Boundary components: union-find on rank 0 over the triangles sharing an edge.

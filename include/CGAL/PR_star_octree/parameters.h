@@ -23,6 +23,7 @@ namespace PR_star_octree {
   X(check_links)                                                                                             \
   X(with_boundary_triangles)                                                                                 \
   X(boundary_triangles_output)                                                                               \
+  X(problems_output)                                                                                         \
   X(target_fraction)                                                                                         \
   X(max_edge_length)                                                                                         \
   X(max_rounds)                                                                                              \
@@ -78,6 +79,7 @@ CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_TAG)
 /// | `check_links(bool)` | `compute_boundary()`, `Vertex_classifier` | `true` |
 /// | `with_boundary_triangles(bool)` | `compute_boundary()` | `true` |
 /// | `boundary_triangles_output(OutputIterator)` | `compute_boundary()` | none |
+/// | `problems_output(OutputIterator)` | `check_validity()` (one process) | none |
 /// | `domain_curvature_map(PMap)`, `vertex_type_map(PMap)` | `compute_discrete_distortion()` | none |
 /// | `progress(F)` | every leaf-streaming function, `simplify()` | none |
 /// | `target_fraction`, `max_edge_length`, `max_rounds`, `priority`, `quality_measure`, `quality_floor`, `feature_angle`, `max_boundary_error`, `collapse_priority`, `collapse_placement` | `simplify()` (see its documentation) | |
