@@ -49,7 +49,7 @@ inline constexpr bool xdmf_has_hdf5() {
 /// The grid read is the first `<Grid>` of the `<Domain>`; for a `Collection` (a temporal series,
 /// as meshio's `TimeSeriesWriter` and DOLFINx write them) or a `Tree`, its first grid, recursively;
 /// when that grid takes its topology and geometry from another one through `<xi:include>`, they are
-/// taken from the grid its `xpointer` names (`Grid[@Name='mesh']`), else from the first grid of the
+/// taken from the grid its `xpointer` names by its `Name`, else from the first grid of the
 /// domain that has both.  The other grids (later time steps, DOLFINx's separate mesh-tag grids) are
 /// not read.
 ///
