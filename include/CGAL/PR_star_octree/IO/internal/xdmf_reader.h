@@ -296,8 +296,9 @@ public:
     // bounded by the text, and counted against it first)
     bool announced_by_file = gitem.hdf || titem.hdf;
     if (announced_by_file || 2 * (gitem.announced + titem.announced) <= doc_.text().size() + 2)
-      check_memory(name_, geometry->line, nv, nc, sizeof(Point_3), sizeof(Tetrahedron) + 1, node_arrays,
-                   cell_arrays);
+      // (a Mixed topology is held whole while it is read: 5 values of 8 bytes per tetrahedron)
+      check_memory(name_, geometry->line, nv, nc, sizeof(Point_3), sizeof(Tetrahedron) + 1 + (mixed ? 40 : 0),
+                   node_arrays, cell_arrays);
 
     Mesh mesh;
     // points
