@@ -245,6 +245,27 @@ else()
   message(STATUS "XDMF cases with .h5 files: skipped (prstar without HDF5, or no h5py)")
 endif()
 
+# ---------------------------------------------------------------- gmsh (.msh): $NodeData, $ElementData
+# (one tetrahedron on lines 16-20; a data section from line 21, its entries from line 30)
+set(gh "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n")
+set(ge "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n$EndElements\n")
+set(gd "1\n\"d\"\n1\n0\n3\n0\n1\n")
+case(g_version.msh "$MeshFormat\n4.0 0 8\n$EndMeshFormat\n" ":2: unsupported .msh format version '4.0'")
+case(g_node_tag.msh "${gh}$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 7\n$EndElements\n" ":19: element 1: node tag 7 is not in \\$Nodes")
+case(g_nodedata_node.msh "${gh}${ge}$NodeData\n${gd}1\n9 1.5\n$EndNodeData\n" ":30: \\$NodeData 'd': node tag 9 is not in \\$Nodes")
+case(g_nodedata_nan.msh "${gh}${ge}$NodeData\n${gd}2\n1 0.5\n2 nan\n$EndNodeData\n" ":31: value 'nan' is not finite")
+case(g_nodedata_text.msh "${gh}${ge}$NodeData\n${gd}1\n1 one\n$EndNodeData\n" ":30: value 'one' is not a number")
+case(g_nodedata_short.msh "${gh}${ge}$NodeData\n${gd}2\n1 0.5\n$EndNodeData\n" ":31: node tag '\\$EndNodeData' is not an integer")
+case(g_nodedata_long.msh "${gh}${ge}$NodeData\n${gd}1\n1 0.5\n2 0.5\n$EndNodeData\n" ":31: expected \\$EndNodeData")
+case(g_nodedata_int_tags.msh "${gh}${ge}$NodeData\n1\n\"d\"\n1\n0\n2\n0\n1\n$EndNodeData\n" "2 integer tags, at least 3 expected")
+case(g_nodedata_components.msh "${gh}${ge}$NodeData\n1\n\"d\"\n1\n0\n3\n0\n0\n1\n1 1\n$EndNodeData\n" "0 components per entry")
+case(g_nodedata_quote.msh "${gh}${ge}$NodeData\n1\n\"d\n1\n0\n" ":23: unterminated string tag")
+case(g_nodedata_first.msh "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$NodeData\n${gd}0\n$EndNodeData\n" ":4: \\$NodeData before \\$Nodes")
+case(g_nodedata_huge.msh "${gh}${ge}$NodeData\n${gd}1000000000000000\n1 0.5\n" "end of file")
+case(g_elementdata_tag.msh "${gh}${ge}$ElementData\n${gd}1\n5 2\n$EndElementData\n" ":30: \\$ElementData 'd': element tag 5 is not in \\$Elements")
+case(g_elementdata_first.msh "${gh}$ElementData\n${gd}0\n$EndElementData\n" ":16: \\$ElementData before \\$Elements")
+case(g_elementdata_inf.msh "${gh}${ge}$ElementData\n${gd}1\n1 1e999\n$EndElementData\n" ":30: value '1e999' is not finite")
+
 # ---------------------------------------------------------------- counts that fit the index type but lie
 # (10^9 vertices announced in a tiny file: reserving for them would exceed the 2 GB address space
 # given by prlimit and end in "out of memory" instead of the expected message)
