@@ -288,6 +288,83 @@ run(2 "" "unknown option --frob" validate ${DATA}/sphere.mesh --frob)
 run(2 "" "--kv: '0' is not a positive integer" validate ${DATA}/sphere.mesh --kv 0)
 run(2 "" "--max-depth must be in 1..64" validate ${DATA}/sphere.mesh --max-depth 0)
 run(0 "" "" validate ${DATA}/sphere.mesh --help)
+# validate says where (issue 19): planted defects in the input's numbering: tetrahedron 2 inverted
+# (the only negative one), 3 flat, the triangle 0 1 2 in tetrahedra 0, 4 and 5, vertices 5 and 16
+# in no tetrahedron (a warning); the table, the JSON list (every problem; the same with 1 and 2
+# threads) and the arrays `problem` of -o read back with VTK.
+file(WRITE ${WORK}/problems.off "OFF\n17 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n5 5 5\n10 0 0\n11 0 0\n10 1 0\n10 0 1\n"
+     "20 0 0\n21 0 0\n20 1 0\n21 1 0\n0 0 -1\n0.3 0.3 2\n-5 5 5\n"
+     "0 1 2 3\n1 2 3 4\n6 8 7 9\n10 11 12 13\n0 2 1 14\n0 1 2 15\n")
+run(3 "tetrahedron 2 \\(vertices 6 8 7 9\\): inverted.*tetrahedron 3 \\(vertices 10 11 12 13\\): flat.*triangle 0 1 2: in 3 tetrahedra \\(0, 4, 5\\).*vertex 5: unreferenced.*vertex 16: unreferenced"
+    "^$" validate ${WORK}/problems.off)
+run(3 "\"unreferenced_vertices\": 2" "^$" validate ${WORK}/problems.off --json --threads 1)
+set(problems_json1 "${last_out}")
+file(WRITE ${WORK}/problems.json "${last_out}")
+run(3 "" "^$" validate ${WORK}/problems.off --json --threads 2 --kv 1)
+string(REGEX REPLACE "\"seconds\": [0-9.e+-]+" "" problems_json1 "${problems_json1}")
+string(REGEX REPLACE "\"seconds\": [0-9.e+-]+" "" problems_json2 "${last_out}")
+if(NOT problems_json1 STREQUAL problems_json2)
+  message(SEND_ERROR "validate --json: 1 and 2 threads (k_v 50, 1) differ:\n${problems_json1}\n${problems_json2}")
+endif()
+file(WRITE ${WORK}/check_problems.py [=[
+import json, sys
+d = json.load(open(sys.argv[1]))
+p = d["problems"]
+kinds = [x["kind"] for x in p]
+assert kinds == sorted(kinds, key=["inverted_tetrahedron", "flat_tetrahedron", "nonmanifold_triangle",
+                                   "nonmanifold_vertex", "unreferenced_vertex"].index), kinds
+def only(kind):
+    return [x for x in p if x["kind"] == kind]
+inv, flat, tri, unref = only("inverted_tetrahedron"), only("flat_tetrahedron"), only("nonmanifold_triangle"), only("unreferenced_vertex")
+assert [(x["tetrahedron"], x["vertices"]) for x in inv] == [(2, [6, 8, 7, 9])], inv
+assert [(x["tetrahedron"], x["vertices"]) for x in flat] == [(3, [10, 11, 12, 13])], flat
+assert [(x["vertices"], x["tetrahedra"]) for x in tri] == [([0, 1, 2], [0, 4, 5])], tri
+assert [x["vertex"] for x in unref] == [5, 16], unref
+assert all(x["reason"] for x in p)
+nm = [x["vertex"] for x in only("nonmanifold_vertex")]
+assert len(nm) == d["nonmanifold_vertices"] and d["inverted"] == 1 and d["degenerate"] == 1, d
+assert d["unreferenced_vertices"] == 2 and d["nonmanifold_triangles"] == 1 and not d["valid"], d
+if len(sys.argv) > 2:  # the -o output read back with VTK
+    try:
+        import vtk
+        from vtk.util.numpy_support import vtk_to_numpy
+    except ImportError:
+        print("no VTK: skipped")
+        sys.exit(0)
+    r = vtk.vtkXMLUnstructuredGridReader()
+    r.SetFileName(sys.argv[2])
+    r.Update()
+    g = r.GetOutput()
+    assert g.GetNumberOfPoints() == 17 and g.GetNumberOfCells() == 6
+    cells = list(vtk_to_numpy(g.GetCellData().GetArray("problem")).astype(int))
+    points = list(vtk_to_numpy(g.GetPointData().GetArray("problem")).astype(int))
+    assert cells == [4, 0, 1, 2, 4, 4], cells
+    expected = [(1 if v in nm else 0) | (2 if v in (5, 16) else 0) | (4 if v in (0, 1, 2) else 0) for v in range(17)]
+    assert points == expected, (points, expected)
+    assert [g.GetCell(2).GetPointId(k) for k in range(4)] == [6, 8, 7, 9]  # the input's order
+print("ok")
+]=])
+run(3 "wrote .*problems_out.vtu" "^$" validate ${WORK}/problems.off -o ${WORK}/problems_out.vtu)
+execute_process(COMMAND /usr/bin/python3 ${WORK}/check_problems.py ${WORK}/problems.json ${WORK}/problems_out.vtu
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "ok|skipped")
+  message(SEND_ERROR "validate problems (JSON, -o) read back: ${rc} ${out} ${err}")
+endif()
+run(3 "" "^$" validate ${WORK}/problems.off -o ${WORK}/problems_out.vtk --json --force --kv inf)
+if(NOT last_out MATCHES "\"output\": ")
+  message(SEND_ERROR "validate -o --json: no output key: ${last_out}")
+endif()
+run(2 "" "must be a .vtu" validate ${WORK}/problems.off -o ${WORK}/problems_out.mesh)
+# more than 10 of a kind: the first 10 and how many more; unreferenced vertices alone leave the mesh valid
+file(WRITE ${WORK}/lonely.off "OFF\n17 1\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
+foreach(i RANGE 4 16)
+  file(APPEND ${WORK}/lonely.off "${i} 7 3\n")
+endforeach()
+file(APPEND ${WORK}/lonely.off "0 1 2 3\n")
+run(0 "valid.*vertex 13: unreferenced[^\n]*\n  \\.\\.\\. and 3 more unreferenced vertices" "^$" validate ${WORK}/lonely.off)
+if(last_out MATCHES "vertex 14:")
+  message(SEND_ERROR "validate: more than 10 unreferenced vertices listed: ${last_out}")
+endif()
 
 # simplify: target reached, output valid with the same topology, point data kept, no overwrite.
 run(0 "\"removed_tetrahedra\": ([0-9]+).*\"blocked\": {\"different_leaves\"" "" simplify ${DATA}/torus.mesh --target 0.5 --kv 20 -o ${WORK}/torus_half.vtu --json)

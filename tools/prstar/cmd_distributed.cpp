@@ -272,6 +272,8 @@ int curvature_distributed(const Options& o) {
 }
 
 int validate_distributed(const Options& o) {
+  if (!o.output().empty())
+    throw Usage_error("-o is not distributed: the problem lists are one-process only (run without mpirun)");
   Progress_bar progress(o.show_progress() && world_rank() == 0);
   const auto start = std::chrono::steady_clock::now();
   const auto tree = build(o, progress);

@@ -62,8 +62,10 @@ void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
                      const CGAL::PR_star_octree::Boundary_counts& b, double seconds);
 void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const std::string& field_name,
                       const std::size_t counts[4], const Distortion_summary& summary, double seconds);
-/// \returns the exit status: valid or not
-int report_validity(const Options& o, const CGAL::PR_star_octree::Validity_result& r, double seconds);
+/// `problems`: the list of `check_validity()`'s `problems_output` (one process), or null (distributed:
+/// the counts only).  \returns the exit status: valid or not
+int report_validity(const Options& o, const CGAL::PR_star_octree::Validity_result& r, double seconds,
+                    const std::vector<CGAL::PR_star_octree::Validity_problem>* problems = nullptr);
 
 #ifdef PRSTAR_WITH_MPI
 /// Gives stats, boundary, curvature and validate their distributed form (cmd_distributed.cpp).
