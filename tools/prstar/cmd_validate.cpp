@@ -262,8 +262,8 @@ int run_validate(const Options& o) {
 } // namespace
 
 Command validate_command() {
-  return Command("validate", "orientation, flat and non-manifold elements, Euler characteristic, boundary "
-                             "components, and where the problems are")
+  return Command("validate",
+                 "orientation, flat and non-manifold elements, Euler characteristic, boundary components")
       .input()
       .description(
           R"help(Checks MESH leaf by leaf: the orientation of every tetrahedron with an exact predicate (all
@@ -285,16 +285,17 @@ unreadable or malformed file), 2 a usage error.)help")
       .kv()
       .max_depth()
       .output("OUT", cell_data_outputs(),
-              "write the input mesh (same vertex and tetrahedron order) with the cell array\n"
-              "`problem` (bit flags: 1 inverted, 2 flat, 4 in a triangle of 3+ tetrahedra) and the\n"
-              "point array `problem` (1 non-manifold, 2 unreferenced, 4 on a triangle of 3+\n"
-              "tetrahedra), for ParaView: .vtu or .vtk")
+              "write the input mesh (same vertex and tetrahedron order) with the cell\n"
+              "array `problem` (bit flags: 1 inverted, 2 flat, 4 in a triangle of 3+\n"
+              "tetrahedra) and the point array `problem` (1 non-manifold, 2 unreferenced,\n"
+              "4 on a triangle of 3+ tetrahedra), for ParaView: .vtu or .vtk")
       .json_keys("keys: valid, tetrahedra, inverted, degenerate, nonmanifold_triangles,\n"
                  "nonmanifold_vertices, unreferenced_vertices (a warning), euler_characteristic,\n"
-                 "boundary_triangles, boundary_components, seconds, output, and problems: every problem as\n"
-                 "{kind (inverted_tetrahedron, flat_tetrahedron, nonmanifold_triangle, nonmanifold_vertex,\n"
-                 "unreferenced_vertex), tetrahedron, vertex, vertices, tetrahedra (of a triangle), reason},\n"
-                 "sorted by kind then element, in the input's numbering (one process only)")
+                 "boundary_triangles, boundary_components, seconds, output, and problems (one\n"
+                 "process only): every problem, sorted by kind then element, in the input's\n"
+                 "numbering, as {kind (inverted_tetrahedron, flat_tetrahedron, nonmanifold_triangle,\n"
+                 "nonmanifold_vertex, unreferenced_vertex), tetrahedron, vertex, vertices,\n"
+                 "tetrahedra (of a triangle), reason}")
       .run(run_validate);
 }
 
