@@ -293,9 +293,9 @@ unreadable or malformed file), 2 a usage error.)help")
                  "nonmanifold_vertices, unreferenced_vertices (a warning), euler_characteristic,\n"
                  "boundary_triangles, boundary_components, seconds, output, and problems (one\n"
                  "process only): every problem, sorted by kind then element, in the input's\n"
-                 "numbering, as {kind (inverted_tetrahedron, flat_tetrahedron, nonmanifold_triangle,\n"
-                 "nonmanifold_vertex, unreferenced_vertex), tetrahedron, vertex, vertices,\n"
-                 "tetrahedra (of a triangle), reason}")
+                 "numbering, as {kind (inverted_tetrahedron, flat_tetrahedron,\n"
+                 "nonmanifold_triangle, nonmanifold_vertex, unreferenced_vertex), tetrahedron,\n"
+                 "vertex, vertices, tetrahedra (of a triangle), reason}")
       .run(run_validate);
 }
 
