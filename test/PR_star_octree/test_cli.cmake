@@ -122,7 +122,7 @@ if(NOT vtu MATCHES "Name=\"boundary\"")
 endif()
 run(0 "boundary triangles" "" boundary ${DATA}/torus.mesh --kv 7)
 run(nonzero "" "exists.*--force" boundary ${DATA}/sphere.mesh -o ${WORK}/sphere_boundary.vtu)
-run(nonzero "" "must be a .vtu, .vtk, .node or .ele file" boundary ${DATA}/sphere.mesh -o ${WORK}/sphere_boundary.mesh)
+run(nonzero "" "must be a .vtu, .vtk, .node, .ele.* file" boundary ${DATA}/sphere.mesh -o ${WORK}/sphere_boundary.mesh)
 
 # generate --shape lattice (issue 10): the streamed VTU is read back with the closed-form counts of
 # a 6 x 6 x 6 Kuhn lattice: (N+1)^3 vertices, 6 N^3 tetrahedra, 12 N^2 boundary triangles, a ball
@@ -177,7 +177,7 @@ foreach(out boundary_order.vtu boundary_order.vtk boundary_order.node curvature_
   endif()
 endforeach()
 run(2 "" "--cells must be" generate --shape lattice --cells 0 -o ${WORK}/lattice0.vtu)
-run(2 "" "must be a .vtu" generate --shape lattice --cells 3 -o ${WORK}/lattice3.mesh)
+run(0 "64 vertices, 162 tetrahedra" "" generate --shape lattice --cells 3 -o ${WORK}/lattice3.mesh) # any format
 run(2 "" "--cells only" generate --shape lattice --cells 3 --cell-size 0.1 -o ${WORK}/lattice3.vtu)
 
 # Labels (issue 12): the Medit references of a Mesh_3 file are subdomain labels; stats reports the
@@ -240,7 +240,7 @@ file(STRINGS ${WORK}/sphere.csv rows)
 list(LENGTH rows nrows)
 math(EXPR expected "${nv} + 1")
 list(GET rows 0 header)
-if(NOT nrows EQUAL expected OR NOT header STREQUAL "vertex,x,y,z,boundary,distortion")
+if(NOT nrows EQUAL expected OR NOT header STREQUAL "vertex,x,y,z,boundary,distortion,domain_curvature")
   message(SEND_ERROR "curvature --csv: ${nrows} rows (expected ${expected}), header '${header}'")
 endif()
 list(GET rows 1 first_row)
@@ -248,7 +248,7 @@ if(NOT first_row MATCHES "^0,")
   message(SEND_ERROR "curvature --csv: the first row is not vertex 0: ${first_row}")
 endif()
 foreach(row IN LISTS rows)
-  if(row MATCHES "^[0-9]+,[^,]*,[^,]*,[^,]*,0,(.*)$")
+  if(row MATCHES "^[0-9]+,[^,]*,[^,]*,[^,]*,0,([^,]*),[^,]*$")
     set(d "${CMAKE_MATCH_1}")
     if(NOT d MATCHES "^-?[0-9.]+(e-(1[0-9]|[2-9][0-9]))?$" OR (d MATCHES "^-?[0-9]" AND NOT d MATCHES "e-"))
       if(NOT d MATCHES "^-?0$")
@@ -378,7 +378,7 @@ run(0 "\"valid\": true.*\"euler_characteristic\": 0.*\"boundary_components\": 1"
 run(0 "removed.*wrote" "" simplify ${DATA}/sphere.mesh --target 0.25 --kv inf -o ${WORK}/sphere_q.mesh --force)
 run(0 "" "" simplify ${DATA}/cube.mesh --max-length 0.05 -o ${WORK}/cube_s.off --quiet)
 run(nonzero "" "exists.*--force" simplify ${DATA}/torus.mesh --target 0.5 -o ${WORK}/torus_half.vtu)
-run(nonzero "" "give --target or --max-length" simplify ${DATA}/torus.mesh -o ${WORK}/x.mesh)
+run(nonzero "" "give --target, --keep or --max-length" simplify ${DATA}/torus.mesh -o ${WORK}/x.mesh)
 run(nonzero "" "--target must be" simplify ${DATA}/torus.mesh --target 1.5 -o ${WORK}/x.mesh)
 run(nonzero "" "missing -o" simplify ${DATA}/torus.mesh --target 0.5)
 run(nonzero "" "cannot write this format" simplify ${DATA}/torus.mesh --target 0.5 -o ${WORK}/x.txt)
@@ -457,9 +457,9 @@ foreach(cmd IN LISTS commands)
   endif()
 endforeach()
 
-# The same usage errors give exit 2 in every command, and print the command's usage line.
+# The same usage errors give exit 2 in every command, in one line and where to read more.
 foreach(cmd IN LISTS commands)
-  run(2 "^$" "prstar ${cmd}: unknown option --frob.*usage: prstar ${cmd}" ${cmd} --frob)
+  run(2 "^$" "^prstar ${cmd}: unknown option --frob\nsee 'prstar ${cmd} --help'\n$" ${cmd} --frob)
 endforeach()
 foreach(cmd stats boundary curvature validate simplify)
   run(2 "^$" "prstar ${cmd}: missing MESH" ${cmd})

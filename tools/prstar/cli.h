@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
@@ -26,6 +27,62 @@ namespace prstar {
 struct Usage_error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+/// A number as the shortest text that reads back to the same double (`std::to_chars`): 0.04022809499999999
+/// prints as "0.040228095" when that is the same double; "nan", "inf", "-inf" for the others.
+inline std::string number(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+/// For people (tables): a number that is exactly a float32 (coordinates of a float32 file) as the
+/// shortest text of that float ("0.99999976" rather than "0.9999997615814209"), others as `number()`.
+inline std::string short_number(double v) {
+  const float f = static_cast<float>(v);
+  if (!std::isfinite(v) || static_cast<double>(f) != v) return number(v);
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, f);
+  return std::string(buf, r.ptr);
+}
+
+/// The edit distance of two option or command names (insertions, deletions, substitutions and
+/// swaps of two neighbours each count one).
+inline std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+/// " (did you mean X?)" for the name of `candidates` closest to `given` (a typo: at most 2 edits, or
+/// a prefix of one name only), or "".
+inline std::string did_you_mean(const std::string& given, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_distance = 3, prefixed = 0;
+  std::string prefix_of;
+  for (const std::string& c : candidates) {
+    const std::size_t d = edit_distance(given, c);
+    if (d < best_distance) {
+      best_distance = d;
+      best = c;
+    }
+    if (given.size() >= 3 && c.compare(0, given.size(), given) == 0) {
+      ++prefixed;
+      prefix_of = c;
+    }
+  }
+  if (best.empty() && prefixed == 1) best = prefix_of;
+  return best.empty() ? "" : " (did you mean " + best + "?)";
+}
 
 /// Parses `--name value`, `--name=value`, `-o value`, flags and positional arguments.
 class Arguments {
@@ -54,8 +111,11 @@ public:
           }
           if (values_.count(a)) throw Usage_error("option " + a + " given twice");
           values_[a] = value;
-        } else
-          throw Usage_error("unknown option " + a);
+        } else {
+          std::vector<std::string> known = flags;
+          known.insert(known.end(), options.begin(), options.end());
+          throw Usage_error("unknown option " + a + did_you_mean(a, known));
+        }
       } else
         positional_.push_back(a);
     }
@@ -80,6 +140,23 @@ public:
     if (used != s.size() || !std::isfinite(d))
       throw Usage_error("option " + name + ": '" + s + "' is not a number");
     return d;
+  }
+  /// A fraction in [0, 1] given as a number ("0.3") or a percentage ("30%").
+  double get_fraction(const std::string& name, double fallback) const {
+    if (!has(name)) return fallback;
+    std::string s = get(name);
+    const bool percent = !s.empty() && s.back() == '%';
+    if (percent) s.pop_back();
+    std::size_t used = 0;
+    double d = 0;
+    try {
+      d = std::stod(s, &used);
+    } catch (...) {
+      used = 0;
+    }
+    if (s.empty() || used != s.size() || !std::isfinite(d))
+      throw Usage_error("option " + name + ": '" + get(name) + "' is not a fraction (e.g. 0.3 or 30%)");
+    return percent ? d / 100 : d;
   }
   const std::vector<std::string>& positional() const { return positional_; }
 
@@ -135,11 +212,9 @@ public:
     if constexpr (std::is_same<T, bool>::value)
       out_ << (v ? "true" : "false");
     else if constexpr (std::is_floating_point<T>::value) {
-      if (std::isfinite(v)) {
-        std::ostringstream s;
-        s << std::setprecision(std::numeric_limits<double>::max_digits10) << v;
-        out_ << s.str();
-      } else
+      if (std::isfinite(v))
+        out_ << number(static_cast<double>(v));
+      else
         out_ << "null";
     } else if constexpr (std::is_arithmetic<T>::value)
       out_ << v;
@@ -217,6 +292,12 @@ private:
 class Table {
 public:
   explicit Table(std::vector<std::string> header) : header_(std::move(header)) {}
+  /// Column `i` aligned to the left (text), not to the right (numbers); the first one always is.
+  Table& align_left(std::size_t i) {
+    left_.resize(std::max(left_.size(), i + 1), false);
+    left_[i] = true;
+    return *this;
+  }
   void add(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
   std::string str() const {
     std::vector<std::size_t> w(header_.size(), 0);
@@ -227,7 +308,8 @@ public:
     auto line = [&](const std::vector<std::string>& r) {
       for (std::size_t i = 0; i < w.size(); ++i) {
         const std::string c = i < r.size() ? r[i] : "";
-        s << (i ? "  " : "") << (i == 0 ? std::left : std::right) << std::setw(static_cast<int>(w[i])) << c;
+        const bool left = i == 0 || (i < left_.size() && left_[i]);
+        s << (i ? "  " : "") << (left ? std::left : std::right) << std::setw(static_cast<int>(w[i])) << c;
       }
       s << '\n';
     };
@@ -242,6 +324,7 @@ public:
 private:
   std::vector<std::string> header_;
   std::vector<std::vector<std::string>> rows_;
+  std::vector<bool> left_;
 };
 
 inline std::string fixed(double v, int digits) {

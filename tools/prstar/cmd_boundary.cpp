@@ -10,20 +10,24 @@
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/boundary.h>
+#include <CGAL/PR_star_octree/IO/surface.h>
 #include <CGAL/PR_star_octree/parameters.h>
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <iterator>
 #include <iostream>
 
 namespace prstar {
 
 // The summary of the boundary command (one process or distributed): JSON or a table.
 void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
-                     const CGAL::PR_star_octree::Boundary_counts& b, double seconds) {
+                     const CGAL::PR_star_octree::Boundary_counts& b, double seconds, long long interfaces) {
   const std::string& input = o.input();
   const std::size_t kv = o.kv();
-  const std::string out = o.output();
+  const std::string out = o.output(), surface = o.output("--surface");
   if (o.json()) {
     Json j;
     j.begin_object().field("vertices", nv).field("tetrahedra", nt).key("kv");
@@ -36,7 +40,9 @@ void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
         .field("boundary_tetrahedra", b.boundary_tetrahedra)
         .field("boundary_face_tetrahedra", b.boundary_face_tetrahedra)
         .field("seconds", seconds);
+    if (interfaces >= 0) j.field("interface_triangles", interfaces);
     if (!out.empty()) j.field("output", out);
+    if (!surface.empty()) j.field("surface", surface);
     j.end_object();
     std::cout << j.str() << '\n';
     return;
@@ -48,6 +54,7 @@ void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
   t.add({"  non-manifold", std::to_string(b.nonmanifold_vertices)});
   t.add({"  in no tetrahedron", std::to_string(b.unreferenced_vertices)});
   t.add({"boundary triangles", std::to_string(b.boundary_triangles)});
+  if (interfaces >= 0) t.add({"triangles between two labels", std::to_string(interfaces)});
   t.add({"tetrahedra touching the boundary", std::to_string(b.boundary_tetrahedra)});
   t.add({"  with a boundary face", std::to_string(b.boundary_face_tetrahedra)});
   std::cout << input << " (k_v = " << bucket_size_string(kv) << ", " << fixed(seconds, 3) << " s)\n"
@@ -56,9 +63,18 @@ void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
     std::cout << "warning: " << b.nonmanifold_vertices
               << " vertices have a link that is neither a sphere nor a disc (non-manifold)\n";
   if (!out.empty()) std::cout << "wrote " << out << '\n';
+  if (!surface.empty()) std::cout << "wrote " << surface << '\n';
 }
 
 namespace {
+
+// ".off,.stl,..." for Command::output, from the surface format table
+std::string surface_output_extensions() {
+  std::string r;
+  for (const auto& f : CGAL::PR_star_octree::IO::surface_formats)
+    r += (r.empty() ? "." : ",.") + std::string(f.extension);
+  return r;
+}
 
 using Octree = CGAL::PR_star_octree_3<>;
 using CGAL::PR_star_octree::Vertex_type;
@@ -77,41 +93,105 @@ struct Vertex_code_map {
   }
 };
 
+namespace PIO = CGAL::PR_star_octree::IO;
+
+// The surface of the mesh (boundary and interfaces between labels) with its data: the surface's
+// vertices in the user's order, with their index in the input (`vertex`) and kind
+// (`boundary_type`), the input's point data, the label pair of each triangle and the label names.
+CGAL::PR_star_octree::Triangle_surface<Octree::Point_3>
+make_surface(const Octree& tree, const std::vector<CGAL::PR_star_octree::Surface_triangle>& triangles,
+             const std::vector<double>& codes, const Mesh_arrays& arrays) {
+  constexpr std::uint32_t none = 0xffffffffu;
+  const std::size_t nv = tree.number_of_vertices();
+  std::vector<std::uint32_t> index(nv, none);
+  std::vector<char> on_interface(nv, 0);
+  for (const auto& t : triangles)
+    for (std::size_t v : t.vertices) {
+      index[v] = 0;
+      on_interface[v] = on_interface[v] || t.interface;
+    }
+  CGAL::PR_star_octree::Triangle_surface<Octree::Point_3> s;
+  CGAL::PR_star_octree::Int_array vertex{"vertex", {}}, kind{"boundary_type", {}};
+  const std::vector<Octree::Index> from_original = tree.vertex_from_original();
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (index[v] == none) continue;
+    index[v] = static_cast<std::uint32_t>(s.points.size());
+    s.points.push_back(tree.point(from_original[v]));
+    vertex.values.push_back(static_cast<int>(v));
+    // 0 interior (never on the surface), 1 boundary, 2 interior on an interface, 3 non-manifold
+    kind.values.push_back(codes[v] == 2 ? 3 : codes[v] == 1 ? 1 : on_interface[v] ? 2 : 0);
+  }
+  for (const auto& a : arrays.point_data) {
+    CGAL::PR_star_octree::Data_array b{a.name, {}};
+    b.values.reserve(s.points.size());
+    for (std::size_t v = 0; v < nv; ++v)
+      if (index[v] != none) b.values.push_back(a.values[v]);
+    s.point_data.push_back(std::move(b));
+  }
+  CGAL::PR_star_octree::Int_array inside{"label_inside", {}}, outside{"label_outside", {}}, interface {
+    "interface", {}
+  };
+  for (const auto& t : triangles) {
+    s.triangles.push_back({{index[t.vertices[0]], index[t.vertices[1]], index[t.vertices[2]]}});
+    inside.values.push_back(t.inside);
+    outside.values.push_back(t.interface ? t.outside : -1);
+    interface.values.push_back(t.interface ? 1 : 0);
+  }
+  s.point_int_data = {std::move(vertex), std::move(kind)};
+  s.cell_int_data = {std::move(inside), std::move(outside), std::move(interface)};
+  s.label_names = arrays.label_names;
+  return s;
+}
+
 int run_boundary(const Options& o) {
   const std::string& input = o.input();
   const std::size_t kv = o.kv();
-  const std::string out = o.output();
+  const std::string out = o.output(), surface_out = o.output("--surface");
   Progress_bar progress(o.show_progress());
   Mesh mesh = read_mesh(input, progress);
   // The octree takes the mesh over (no second copy of V and T).  Without an output to write it keeps
   // no permutation (only counts are reported); with one, the vertex permutation (4 bytes a vertex)
   // gives the output the user's vertex order, and the tetrahedron permutation, only when the mesh
   // has cell data, puts those arrays in the octree's order of the tetrahedra (the one written).
-  Mesh_arrays arrays(mesh); // point and cell data, label names: kept aside in the user's order,
-  if (out.empty()) arrays = Mesh_arrays(); // or dropped when not written
+  const bool writes = !out.empty() || !surface_out.empty();
+  Mesh_arrays arrays(mesh);            // point and cell data, label names: kept aside in the user's order,
+  if (!writes) arrays = Mesh_arrays(); // or dropped when not written
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
   const auto np = params::bucket_size(kv).maximum_depth(o.max_depth());
-  const Octree tree(
-      std::move(mesh),
-      np.vertex_permutation(!out.empty()).tetrahedron_permutation(!out.empty() && !arrays.cell_data.empty()));
+  const Octree tree(std::move(mesh), np.vertex_permutation(writes).tetrahedron_permutation(
+                                         !out.empty() && !arrays.cell_data.empty()));
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("classifying the vertices");
   // the output's array, in the user's numbering (3: in no tetrahedron), written directly
   std::vector<CGAL::PR_star_octree::Point_data_array> result;
-  if (!out.empty()) result.push_back({"boundary", std::vector<double>(nv, 3.)});
-  const CGAL::PR_star_octree::Boundary_counts b = CGAL::PR_star_octree::compute_boundary(
+  if (writes) result.push_back({"boundary", std::vector<double>(nv, 3.)});
+  CGAL::PR_star_octree::Boundary_counts b = CGAL::PR_star_octree::compute_boundary(
       tree, Vertex_code_map{result.empty() ? nullptr : result[0].values.data()},
       params::progress(progress.callback()));
+  std::vector<CGAL::PR_star_octree::Surface_triangle> triangles;
+  if (!surface_out.empty()) {
+    progress.phase("gathering the boundary and interface triangles");
+    CGAL::PR_star_octree::boundary_surface(tree, std::back_inserter(triangles),
+                                           params::progress(progress.callback()));
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
+  if (!surface_out.empty()) {
+    progress.phase("writing " + surface_out);
+    const auto surface = make_surface(tree, triangles, result[0].values, arrays);
+    write_through_temporary(surface_out, [&](const std::string& tmp) { PIO::write_surface(tmp, surface); });
+    progress.finish();
+  }
+  const std::size_t interfaces = static_cast<std::size_t>(
+      std::count_if(triangles.begin(), triangles.end(), [](const auto& t) { return t.interface; }));
   if (!out.empty()) {
     progress.phase("writing " + out);
     Octree_mesh_view<Octree> view(tree, std::move(arrays));
     write_octree_mesh(out, view, result);
     progress.finish();
   }
-  report_boundary(o, nv, nt, b, seconds);
+  report_boundary(o, nv, nt, b, seconds, surface_out.empty() ? -1 : static_cast<long long>(interfaces));
   return exit_success;
 }
 
@@ -130,10 +210,16 @@ Section 7: 2|e| != 3|t| in the vertex link, plus a check that the link is a sphe
               "write the mesh (labels kept) with the point array `boundary` (0 interior,\n"
               "1 boundary, 2 non-manifold, 3 in no tetrahedron): .vtu/.vtk for ParaView, or\n"
               ".node/.ele (TetGen attribute)")
+      .output("SURF", surface_output_extensions(),
+              "write the boundary surface, outward oriented, with the triangles between two\n"
+              "labels (cell arrays label_inside, label_outside (-1 on the boundary), interface),\n"
+              "the point arrays vertex (index in MESH), boundary_type (1 boundary, 2 on an\n"
+              "interface, 3 non-manifold) and MESH's point data, and the label names",
+              false, "--surface")
       .json_keys("keys: vertices, tetrahedra, kv, boundary_vertices, interior_vertices,\n"
                  "nonmanifold_vertices, unreferenced_vertices, boundary_triangles, boundary_tetrahedra\n"
                  "(tetrahedra with a boundary or non-manifold vertex), boundary_face_tetrahedra (with a\n"
-                 "face on the boundary), seconds, output")
+                 "face on the boundary), interface_triangles (with --surface), seconds, output, surface")
       .run(run_boundary);
 }
 

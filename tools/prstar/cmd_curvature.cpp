@@ -14,7 +14,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -22,25 +24,48 @@
 
 namespace prstar {
 
+namespace {
+
+// The min, max and mean of a summary, as JSON fields `<prefix>_min`... (none when it is empty).
+void json_summary(Json& j, const std::string& prefix, const Value_summary& s) {
+  if (s.count == 0) return;
+  j.field(prefix + "_min", s.min).field(prefix + "_max", s.max).field(prefix + "_mean", s.mean());
+}
+
+// Three table cells: min, max, mean ("-" when empty).
+void table_cells(std::vector<std::string>& row, const Value_summary& s) {
+  for (double x : {s.min, s.max, s.mean()}) row.push_back(s.count ? short_number(x) : "-");
+}
+
+} // namespace
+
 // The summary of the curvature command (one process or distributed): JSON or a table.
 void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const std::string& field_name,
-                      const std::size_t counts[4], const Distortion_summary& summary, double seconds) {
+                      const Curvature_summary& summary, double seconds) {
   const std::string& input = o.input();
   const std::size_t kv = o.kv();
   const std::string out = o.output(), csv = o.output("--csv");
+  Value_summary distortion = summary.distortion[0], domain = summary.domain[0];
+  distortion.add(summary.distortion[1]);
+  domain.add(summary.domain[1]);
   if (o.json()) {
     Json j;
     j.begin_object().field("vertices", nv).field("tetrahedra", nt).key("kv");
     json_kv(j, kv)
         .field("field", field_name)
-        .field("interior_vertices", counts[0])
-        .field("boundary_vertices", counts[1])
-        .field("nonmanifold_vertices", counts[2])
-        .field("unreferenced_vertices", counts[3]);
-    if (summary.count)
-      j.field("distortion_min", summary.min)
-          .field("distortion_max", summary.max)
-          .field("distortion_mean", summary.mean());
+        .field("interior_vertices", summary.counts[0])
+        .field("boundary_vertices", summary.counts[1])
+        .field("nonmanifold_vertices", summary.counts[2])
+        .field("unreferenced_vertices", summary.counts[3]);
+    json_summary(j, "distortion", distortion);
+    json_summary(j, "domain_curvature", domain);
+    const char* names[2] = {"interior", "boundary"};
+    for (int k = 0; k < 2; ++k) {
+      j.key(names[k]).begin_object().field("vertices", summary.counts[k]);
+      json_summary(j, "distortion", summary.distortion[k]);
+      json_summary(j, "domain_curvature", summary.domain[k]);
+      j.end_object();
+    }
     j.field("seconds", seconds);
     if (!out.empty()) j.field("output", out);
     if (!csv.empty()) j.field("csv", csv);
@@ -48,17 +73,46 @@ void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const st
     std::cout << j.str() << '\n';
     return;
   }
-  std::cout << input << ": distortion of '" << field_name << "' (k_v = " << bucket_size_string(kv) << ", "
-            << fixed(seconds, 3) << " s)\n";
-  Table t({"vertices", "count", "distortion min", "max", "mean"});
-  t.add({"all manifold", std::to_string(summary.count), summary.count ? fixed(summary.min, 6) : "-",
-         summary.count ? fixed(summary.max, 6) : "-", summary.count ? fixed(summary.mean(), 6) : "-"});
-  t.add({"interior", std::to_string(counts[0]), "", "", ""});
-  t.add({"boundary", std::to_string(counts[1]), "", "", ""});
-  t.add({"non-manifold (NaN)", std::to_string(counts[2]), "", "", ""});
+  std::cout << input << ": distortion of '" << field_name
+            << "' and curvature of the domain (k_v = " << bucket_size_string(kv) << ", " << fixed(seconds, 3)
+            << " s)\n";
+  Table t({"vertices", "count", "distortion min", "max", "mean", "domain curvature min", "max", "mean"});
+  auto row = [&](const std::string& name, std::uint64_t count, const Value_summary& d,
+                 const Value_summary& c) {
+    std::vector<std::string> r{name, std::to_string(count)};
+    table_cells(r, d);
+    table_cells(r, c);
+    t.add(r);
+  };
+  row("all manifold", distortion.count, distortion, domain);
+  row("interior", summary.counts[0], summary.distortion[0], summary.domain[0]);
+  row("boundary", summary.counts[1], summary.distortion[1], summary.domain[1]);
+  t.add({"non-manifold (undefined)", std::to_string(summary.counts[2]), "-", "-", "-", "-", "-", "-"});
+  if (summary.counts[3] != 0)
+    t.add({"in no tetrahedron", std::to_string(summary.counts[3]), "-", "-", "-", "-", "-", "-"});
   std::cout << t.str();
   if (!out.empty()) std::cout << "wrote " << out << '\n';
   if (!csv.empty()) std::cout << "wrote " << csv << '\n';
+}
+
+void write_curvature_csv(const std::string& csv, std::size_t n,
+                         const std::function<Curvature_row(std::size_t)>& row) {
+  write_through_temporary(csv, [&](const std::string& tmp) {
+    std::ofstream f(tmp);
+    if (!f) throw std::runtime_error(csv + ": cannot open the file for writing: " + std::strerror(errno));
+    f << "vertex,x,y,z,boundary,distortion,domain_curvature\n";
+    std::string line;
+    for (std::size_t v = 0; v < n; ++v) {
+      const Curvature_row r = row(v);
+      const bool defined = r.code <= 1; // nan for non-manifold and unreferenced vertices
+      line = std::to_string(v) + ',' + number(r.x) + ',' + number(r.y) + ',' + number(r.z) + ',' +
+             std::to_string(r.code) + ',' + (defined ? number(r.distortion) : "nan") + ',' +
+             (defined ? number(r.domain) : "nan") + '\n';
+      f << line;
+    }
+    f.flush();
+    if (!f) throw std::runtime_error(csv + ": cannot write the output file: " + std::strerror(errno));
+  });
 }
 
 namespace {
@@ -67,12 +121,11 @@ using Octree = CGAL::PR_star_octree_3<>;
 namespace params = CGAL::PR_star_octree::parameters;
 
 // What the command keeps of each vertex's `Vertex_curvature` (40 bytes): the vertex code (1 byte),
-// the distortion and, for an output, the domain curvature; in the user's numbering.
+// the distortion and the domain curvature; in the user's numbering.
 struct Curvature_arrays {
   std::vector<std::uint8_t> code;
   std::vector<double> distortion, domain;
-  Curvature_arrays(std::size_t nv, bool with_domain)
-      : code(nv, 3), distortion(nv, 0), domain(with_domain ? nv : 0) {}
+  explicit Curvature_arrays(std::size_t nv) : code(nv, 3), distortion(nv, 0), domain(nv, 0) {}
 
   struct Map { // a WritablePropertyMap; each vertex written once, by one thread
     using key_type = std::size_t;
@@ -83,7 +136,7 @@ struct Curvature_arrays {
     friend void put(const Map& m, std::size_t v, const value_type& c) {
       m.a->code[v] = static_cast<std::uint8_t>(vertex_type_code(c.type));
       m.a->distortion[v] = c.distortion;
-      if (!m.a->domain.empty()) m.a->domain[v] = c.domain_curvature;
+      m.a->domain[v] = c.domain_curvature;
     }
   };
   Map map() { return Map{this}; }
@@ -146,7 +199,7 @@ int run_curvature(const Options& o) {
                                          !out.empty() && !arrays.cell_data.empty()));
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("computing the distortion");
-  Curvature_arrays curv(nv, !out.empty()); // the user's numbering
+  Curvature_arrays curv(nv); // the user's numbering
   if (field)
     CGAL::PR_star_octree::compute_curvature(tree, CGAL::make_property_map(field->values), curv.map(),
                                             params::progress(progress.callback()));
@@ -159,30 +212,19 @@ int run_curvature(const Options& o) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
 
-  // The summary: the distortions are added exactly (the same mean in any order, as a distributed
-  // run finds it).
-  std::size_t counts[4] = {0, 0, 0, 0};
-  Distortion_summary summary;
-  for (std::size_t v = 0; v < nv; ++v) {
-    ++counts[curv.code[v]];
-    if (curv.code[v] <= 1) summary.add(curv.distortion[v]); // interior or boundary
-  }
+  // The summary: the values are added exactly (the same mean in any order, as a distributed run
+  // finds it).
+  Curvature_summary summary;
+  for (std::size_t v = 0; v < nv; ++v) summary.add(curv.code[v], curv.distortion[v], curv.domain[v]);
   if (!lean) {
     // the mesh of the octree in the user's vertex order (its points for the CSV), with its arrays
+    if (out.empty()) arrays.cell_data.clear(); // the CSV alone: no cell data (nor their permutation)
     Octree_mesh_view<Octree> view(tree, std::move(arrays));
     if (!csv.empty()) {
       progress.phase("writing " + csv);
-      write_through_temporary(csv, [&](const std::string& tmp) {
-        std::ofstream f(tmp);
-        f << std::setprecision(std::numeric_limits<double>::max_digits10);
-        f << "vertex,x,y,z,boundary,distortion\n";
-        for (std::size_t v = 0; v < nv; ++v) {
-          const auto p = view.points[v];
-          f << v << ',' << p.x() << ',' << p.y() << ',' << p.z() << ',' << static_cast<int>(curv.code[v])
-            << ',' << curv.distortion[v] << '\n';
-        }
-        f.flush();
-        if (!f) throw std::runtime_error(csv + ": cannot write the output file");
+      write_curvature_csv(csv, nv, [&](std::size_t v) {
+        const auto p = view.points[v];
+        return Curvature_row{p.x(), p.y(), p.z(), curv.code[v], curv.distortion[v], curv.domain[v]};
       });
       progress.finish();
     }
@@ -201,7 +243,7 @@ int run_curvature(const Options& o) {
       progress.finish();
     }
   }
-  report_curvature(o, nv, nt, field_name, counts, summary, seconds);
+  report_curvature(o, nv, nt, field_name, summary, seconds);
   return exit_success;
 }
 
@@ -225,13 +267,15 @@ Non-manifold vertices get NaN.)")
               "`domain_curvature` (non-manifold vertices: boundary = 2 and 0 for the undefined\n"
               "values): .vtu/.vtk for ParaView, or .node/.ele (TetGen attributes)")
       .output("OUT.csv", ".csv",
-              "write one row per input vertex, in the input order: vertex,x,y,z,boundary,distortion\n"
-              "(boundary: 0 interior, 1 boundary, 2 non-manifold, 3 in no tetrahedron;\n"
-              "distortion: nan for non-manifold vertices)",
+              "write one row per input vertex, in the input order:\n"
+              "vertex,x,y,z,boundary,distortion,domain_curvature (boundary: 0 interior,\n"
+              "1 boundary, 2 non-manifold, 3 in no tetrahedron; nan where undefined)",
               false, "--csv")
       .json_keys("keys: vertices, tetrahedra, kv, field, interior_vertices, boundary_vertices,\n"
-                 "nonmanifold_vertices, unreferenced_vertices, distortion_min, distortion_max,\n"
-                 "distortion_mean (over manifold vertices, when there are some), seconds, output, csv")
+                 "nonmanifold_vertices, unreferenced_vertices, distortion_min/max/mean and\n"
+                 "domain_curvature_min/max/mean (over manifold vertices, when there are some),\n"
+                 "interior and boundary (objects: vertices and the same six keys), seconds,\n"
+                 "output, csv")
       .run(run_curvature);
 }
 

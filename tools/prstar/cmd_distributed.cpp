@@ -142,6 +142,7 @@ int stats_distributed(const Options& o) {
 }
 
 int boundary_distributed(const Options& o) {
+  if (!o.output("--surface").empty()) throw Usage_error("--surface is not distributed yet");
   Progress_bar progress(o.show_progress() && world_rank() == 0);
   const auto start = std::chrono::steady_clock::now();
   const auto tree = build(o, progress);
@@ -211,23 +212,11 @@ int curvature_distributed(const Options& o) {
   progress.finish();
 
   // the summary over the owned vertices of every rank, added exactly
-  struct Local_summary {
-    std::uint64_t counts[4];
-    Distortion_summary distortion;
-  } mine{};
-  mine.distortion = Distortion_summary();
-  for (std::size_t i = 0; i < tree->number_of_owned_vertices(); ++i) {
-    const int code = int(codes[i]);
-    ++mine.counts[code];
-    if (code <= 1) mine.distortion.add(distortion[i]);
-  }
-  const std::vector<Local_summary> all = PRS::internal::all_gather(tree->communicator(), mine);
-  std::size_t counts[4] = {0, 0, 0, 0};
-  Distortion_summary summary;
-  for (const auto& s : all) {
-    for (int k = 0; k < 4; ++k) counts[k] += s.counts[k];
-    summary.add(s.distortion);
-  }
+  Curvature_summary mine;
+  for (std::size_t i = 0; i < tree->number_of_owned_vertices(); ++i)
+    mine.add(int(codes[i]), distortion[i], domain[i]);
+  Curvature_summary summary;
+  for (const auto& s : PRS::internal::all_gather(tree->communicator(), mine)) summary.add(s);
 
   const std::string out = o.output(), csv = o.output("--csv");
   if (!out.empty() || !csv.empty()) {
@@ -237,20 +226,14 @@ int curvature_distributed(const Options& o) {
   }
   if (!csv.empty()) { // as one process writes it: in the input's order, nan where undefined
     progress.phase("writing " + csv);
-    const Mesh mesh = PRS::IO::gather_mesh(*tree, {{"boundary", &codes}, {"distortion", &distortion}});
+    const Mesh mesh = PRS::IO::gather_mesh(
+        *tree, {{"boundary", &codes}, {"distortion", &distortion}, {"domain_curvature", &domain}});
     PRS::internal::run_collectively(tree->communicator(), [&] {
       if (tree->rank() != 0) return;
-      write_through_temporary(csv, [&](const std::string& tmp) {
-        std::ofstream f(tmp);
-        f << std::setprecision(std::numeric_limits<double>::max_digits10);
-        f << "vertex,x,y,z,boundary,distortion\n";
-        for (std::size_t v = 0; v < mesh.points.size(); ++v) {
-          const auto& p = mesh.points[v];
-          f << v << ',' << p.x() << ',' << p.y() << ',' << p.z() << ','
-            << static_cast<int>(mesh.point_data[0].values[v]) << ',' << mesh.point_data[1].values[v] << '\n';
-        }
-        f.flush();
-        if (!f) throw std::runtime_error(csv + ": cannot write the output file");
+      const auto& a = mesh.point_data;
+      write_curvature_csv(csv, mesh.points.size(), [&](std::size_t v) {
+        const auto& p = mesh.points[v];
+        return Curvature_row{p.x(), p.y(), p.z(), int(a[0].values[v]), a[1].values[v], a[2].values[v]};
       });
     });
     progress.finish();
@@ -266,7 +249,7 @@ int curvature_distributed(const Options& o) {
     progress.finish();
   }
   if (tree->rank() == 0)
-    report_curvature(o, tree->number_of_vertices(), tree->number_of_tetrahedra(), field_name, counts, summary,
+    report_curvature(o, tree->number_of_vertices(), tree->number_of_tetrahedra(), field_name, summary,
                      seconds);
   return exit_success;
 }

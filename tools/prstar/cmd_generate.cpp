@@ -7,9 +7,13 @@
 #include "generate.h"
 #include "lattice.h"
 
+#include <CGAL/PR_star_octree/IO.h>
+
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace prstar {
 
@@ -28,8 +32,6 @@ Lattice lattice_options(const Options& o) {
   const double cells = o.get_double("--cells", 0);
   if (!(cells >= 1) || cells != static_cast<double>(static_cast<std::size_t>(cells)) || cells > 2000)
     throw Usage_error("--cells must be an integer from 1 to 2000");
-  if (o.output().size() < 4 || o.output().compare(o.output().size() - 4, 4, ".vtu") != 0)
-    throw Usage_error("--shape lattice streams a binary VTU: the output must be a .vtu file");
   Lattice l;
   l.cells = static_cast<std::size_t>(cells);
   return l;
@@ -41,13 +43,28 @@ int run_lattice(const Options& o) {
   Progress_bar progress(o.show_progress());
   const auto start = std::chrono::steady_clock::now();
   progress.phase("writing the lattice to " + out);
-  write_through_temporary(out, [&](const std::string& tmp) {
-    std::ofstream f(tmp, std::ios::binary);
-    if (!f) throw std::runtime_error(tmp + ": cannot open for writing");
-    write_lattice_vtu(f, lattice, progress.callback());
-    f.close();
-    if (!f) throw std::runtime_error(tmp + ": cannot write");
-  });
+  if (CGAL::PR_star_octree::IO::internal::lower_extension(out) == "vtu") {
+    // streamed: memory does not grow with the lattice
+    write_through_temporary(out, [&](const std::string& tmp) {
+      std::ofstream f(tmp, std::ios::binary);
+      if (!f) throw std::runtime_error(tmp + ": cannot open for writing");
+      write_lattice_vtu(f, lattice, progress.callback());
+      f.close();
+      if (!f) throw std::runtime_error(tmp + ": cannot write");
+    });
+  } else {
+    // another format: the lattice made in memory (its binary VTU, then the mesh read from it),
+    // refused first when that cannot fit (about 56 bytes of VTU and 16 of mesh per tetrahedron)
+    CGAL::PR_star_octree::IO::internal::check_memory(out, 0, lattice.number_of_vertices(),
+                                                     lattice.number_of_tetrahedra(), 24 + 8 + 32, 16 + 56);
+    Mesh mesh;
+    {
+      std::stringstream vtu(std::ios::in | std::ios::out | std::ios::binary);
+      write_lattice_vtu(vtu, lattice, progress.callback());
+      CGAL::PR_star_octree::IO::read_vtu(vtu, mesh, out);
+    }
+    write_mesh_file(out, mesh);
+  }
   progress.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (o.json()) {
@@ -81,6 +98,17 @@ Generate_options generate_options(const Options& o) {
   if (!(opt.cell_size > 0)) throw Usage_error("--cell-size must be positive");
   if (opt.facet_size < 0 || opt.facet_distance < 0) throw Usage_error("sizes must be positive");
   opt.tetgen = o.flag("--tetgen");
+  if (!opt.shape.empty()) {
+    std::vector<std::string> names{"lattice"};
+    std::string list;
+    for (const auto& shape : implicit_shapes()) {
+      names.push_back(shape.first);
+      list += shape.first + ", ";
+    }
+    if (std::find(names.begin(), names.end(), opt.shape) == names.end())
+      throw Usage_error("unknown shape '" + opt.shape + "'" + did_you_mean(opt.shape, names) +
+                        " (shapes: " + list + "lattice)");
+  }
   // The generator's own progress messages are finer than ours: let it speak, and keep ours silent.
   opt.quiet = !o.show_progress();
   return opt;
@@ -118,7 +146,8 @@ std::string shape_list() {
   std::string s = "\nshapes:\n";
   for (const auto& shape : implicit_shapes()) s += "  " + shape.first + ": " + shape.second + '\n';
   s += "  lattice: with --cells N, a jittered N x N x N Kuhn lattice (6 N^3 tetrahedra, point array\n"
-       "           `scalar`) streamed to a binary .vtu without holding the mesh (for huge inputs)\n";
+       "           `scalar`), in any format; to a .vtu it is streamed without holding the mesh (for\n"
+       "           huge inputs)\n";
   return s;
 }
 

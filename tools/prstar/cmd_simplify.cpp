@@ -40,11 +40,15 @@ struct Simplify_settings {
 };
 
 Simplify_settings simplify_settings(const Options& o) {
-  if (!o.has("--target") && !o.has("--max-length")) throw Usage_error("give --target or --max-length");
+  if (!o.has("--target") && !o.has("--keep") && !o.has("--max-length"))
+    throw Usage_error("give --target, --keep or --max-length");
   Simplify_settings s;
-  s.target_fraction = o.get_double("--target", 0);
+  if (o.has("--target") && o.has("--keep")) throw Usage_error("give --target or --keep, not both");
+  s.target_fraction = o.has("--keep") ? 1 - o.get_fraction("--keep", 1) : o.get_fraction("--target", 0);
   if (o.has("--target") && !(s.target_fraction > 0 && s.target_fraction < 1))
-    throw Usage_error("--target must be a fraction of the tetrahedra in (0, 1), e.g. 0.5");
+    throw Usage_error("--target must be a fraction of the tetrahedra in (0, 1), e.g. 0.5 or 50%");
+  if (o.has("--keep") && !(s.target_fraction > 0 && s.target_fraction < 1))
+    throw Usage_error("--keep must be a fraction of the tetrahedra in (0, 1), e.g. 0.25 or 25%");
   s.max_edge_length = o.get_double("--max-length", std::numeric_limits<double>::infinity());
   if (!(s.max_edge_length > 0)) throw Usage_error("--max-length must be positive");
   if (o.has("--min-dihedral") && o.has("--min-radius-ratio"))
@@ -246,7 +250,7 @@ int run_simplify(const Options& o) {
 Command simplify_command() {
   return Command("simplify", "local half-edge-collapse simplification (paper Section 9)")
       .input()
-      .synopsis("(--target F | --max-length L)")
+      .synopsis("(--target F | --keep F | --max-length L)")
       .description(
           R"(Simplifies MESH by edge collapses leaf by leaf (paper Section 9): each leaf collapses its
 short edges, shortest first, under the boundary, geometric (exact orientation) and link
@@ -257,7 +261,12 @@ tetrahedron under the quality floor unless it replaces a worse one, and the surf
 --max-error of the input's.  Point data, cell data and labels follow.  With --kv inf the octree
 has one leaf: the global algorithm.  Exit status 4 when it stops before the target (the reason on
 stderr and in the JSON); the mesh written is the last valid one reached.)")
-      .option("--target", "F", "stop once this fraction of the tetrahedra is removed (0 < F < 1)")
+      .option("--target", "F",
+              "stop once this fraction of the tetrahedra is removed (0 < F < 1, or a\n"
+              "percentage: 0.75 or 75%)")
+      .option("--keep", "F",
+              "stop once this fraction of the tetrahedra is left, as CGAL and MeshLab\n"
+              "count it: --keep 25% is --target 75%")
       .option("--max-length", "L", "collapse only edges shorter than L (with --target: both)")
       .option("--min-dihedral", "DEG",
               "quality floor: smallest dihedral angle of a new tetrahedron (default 5; 0: none)")

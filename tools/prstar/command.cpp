@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -117,6 +118,34 @@ void install_signal_cleanup() {
   }
 }
 
+// Throws, with the OS's reason, unless `file` (or for TetGen both files it stands for) is a
+// readable regular file.
+void check_readable(const std::string& file) {
+  for (const std::string& f : mesh_files(file)) {
+    struct stat st;
+    if (::stat(f.c_str(), &st) != 0) throw std::runtime_error(f + ": " + std::strerror(errno));
+    if (S_ISDIR(st.st_mode)) throw std::runtime_error(f + ": is a folder, not a mesh file");
+    if (::access(f.c_str(), R_OK) != 0) throw std::runtime_error(f + ": " + std::strerror(errno));
+  }
+}
+
+// Throws, with the OS's reason, when `file` cannot be created or replaced: its folder must exist
+// and be writable (the output is written to a temporary there and renamed), and `file` must not
+// be a folder.
+void check_writable(const std::string& file) {
+  struct stat st;
+  if (::stat(file.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw std::runtime_error(file + ": is a folder; give a file name");
+  const std::size_t slash = file.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : file.substr(0, slash);
+  if (::stat(folder.c_str(), &st) != 0)
+    throw std::runtime_error(file + ": cannot write it: the folder " + folder + ": " + std::strerror(errno));
+  if (!S_ISDIR(st.st_mode))
+    throw std::runtime_error(file + ": cannot write it: " + folder + " is not a folder");
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw std::runtime_error(file + ": cannot write it: the folder " + folder + ": " + std::strerror(errno));
+}
+
 // `message` with every occurrence of `from` replaced by `to`.
 std::string replace_all(std::string message, const std::string& from, const std::string& to) {
   for (std::size_t at = message.find(from); at != std::string::npos; at = message.find(from, at + to.size()))
@@ -140,6 +169,10 @@ Command& Command::epilog(std::function<std::string()> text) {
 }
 Command& Command::input(std::string name) {
   input_ = std::move(name);
+  return *this;
+}
+Command& Command::output_positional() {
+  output_positional_ = true;
   return *this;
 }
 Command& Command::kv(std::string default_value) {
@@ -201,6 +234,7 @@ std::string Command::usage_line() const {
   if (has_max_depth_) u += " [--max-depth D]";
   if (!input_.empty()) u += " [--threads N] [--max-memory SIZE]";
   for (const Output_decl& o : outputs_) {
+    if (o.option.empty() && output_positional_) continue; // in the synopsis
     const std::string s = (o.option.empty() ? "-o" : o.option) + " " + o.value_name;
     u += o.required ? " " + s : " [" + s + "]";
   }
@@ -263,9 +297,9 @@ Options Command::parse(int argc, char** argv, int first, bool distributed) const
 
   const std::vector<std::string>& positional = args.positional();
   if (!input_.empty()) {
-    if (positional.size() != 1)
-      throw Usage_error(positional.empty() ? "missing " + input_
-                                           : "expected one " + input_ + ", got several");
+    if (positional.empty()) throw Usage_error("missing " + input_);
+    if (positional.size() > (output_positional_ ? 2u : 1u))
+      throw Usage_error("unexpected argument '" + positional.back() + "'");
     o.input_ = positional[0];
   } else if (!positional.empty())
     throw Usage_error("unexpected argument '" + positional[0] + "'");
@@ -302,12 +336,16 @@ Options Command::parse(int argc, char** argv, int first, bool distributed) const
     std::string value;
     const std::string label = d.option.empty() ? "-o" : d.option;
     if (d.option.empty()) {
-      if (args.has("-o") && args.has("--output")) throw Usage_error("give -o or --output once");
-      value = args.has("-o") ? args.get("-o") : args.get("--output");
+      const bool second = output_positional_ && positional.size() == 2;
+      if (int(args.has("-o")) + int(args.has("--output")) + int(second) > 1)
+        throw Usage_error("give the output once");
+      value = second ? positional[1] : args.has("-o") ? args.get("-o") : args.get("--output");
     } else
       value = args.get(d.option);
     if (value.empty()) {
-      if (d.required) throw Usage_error("missing " + label + " " + d.value_name);
+      if (d.required)
+        throw Usage_error("missing " + (d.option.empty() && output_positional_ ? d.value_name
+                                                                               : label + " " + d.value_name));
       continue;
     }
     if (distributed && d.option.empty() && ends_with(value, ".pvtu")) {
@@ -342,10 +380,14 @@ Options Command::parse(int argc, char** argv, int first, bool distributed) const
 
   if (check_) check_(o);
 
-  if (!o.force_)
-    for (const auto& out : o.outputs_)
-      for (const std::string& f : mesh_files(out.second))
-        if (file_exists(f)) throw std::runtime_error(f + ": the file exists (use --force to overwrite it)");
+  // Before any work: the input can be read, the outputs can be written (the OS's reason if not).
+  if (!o.input_.empty()) check_readable(o.input_);
+  for (const auto& out : o.outputs_)
+    for (const std::string& f : mesh_files(out.second)) {
+      if (!o.force_ && file_exists(f))
+        throw std::runtime_error(f + ": the file exists (use --force to overwrite it)");
+      check_writable(f);
+    }
   return o;
 }
 
@@ -415,6 +457,16 @@ int Command::execute_distributed(const Options& options) const {
   return run_distributed_(options);
 }
 
+namespace {
+// A --max-memory value a quarter above `needed`, in MiB or GiB.
+std::string memory_suggestion(std::size_t needed) {
+  const double want = 1.25 * double(needed);
+  if (want < double(std::size_t(1) << 30))
+    return std::to_string(static_cast<std::size_t>(std::ceil(want / double(1 << 20)))) + "M";
+  return std::to_string(static_cast<std::size_t>(std::ceil(want / double(std::size_t(1) << 30)))) + "G";
+}
+} // namespace
+
 int Command::execute(const Options& options) const {
   const auto threads = thread_limit(options);
   // A mesh is refused before it is read when it cannot fit: the limit leaves room for the octree
@@ -432,8 +484,7 @@ int Command::execute(const Options& options) const {
                              (options.max_memory() != 0 ? " (the limit of --max-memory)"
                                                         : " (the limit: the memory available / 1.3)") +
                              "; to try anyway, raise the limit with --max-memory SIZE " +
-                             "(e.g. --max-memory " + std::to_string(e.needed() / (std::size_t(1) << 30) + 2) +
-                             "G, or unlimited)");
+                             "(e.g. --max-memory " + memory_suggestion(e.needed()) + ", or unlimited)");
   }
 }
 
@@ -503,7 +554,7 @@ void write_through_temporary(const std::string& out, const std::function<void(co
     write(tmp);
     for (std::size_t i = 0; i < tmps.size(); ++i)
       if (std::rename(tmps[i].c_str(), outs[i].c_str()) != 0)
-        throw std::runtime_error(outs[i] + ": cannot write the output file");
+        throw std::runtime_error(outs[i] + ": cannot write the output file: " + std::strerror(errno));
   } catch (const std::bad_alloc&) {
     clean();
     throw;

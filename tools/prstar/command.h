@@ -57,6 +57,8 @@ public:
 
   /// One positional argument, a mesh file that is read and never overwritten.
   Command& input(std::string name = "MESH");
+  /// The -o/--output file may also be given as a second positional argument (`convert IN OUT`).
+  Command& output_positional();
   /// --kv: one bucket threshold (default: the library's default k_v).
   Command& kv(std::string default_value = "");
   /// --kv: a comma-separated list of bucket thresholds (default: the library's default k_v).
@@ -115,6 +117,7 @@ private:
   std::function<std::string()> epilog_;
   std::string input_;
   bool has_kv_ = false, kv_list_ = false, has_max_depth_ = false, quiet_summary_ = false;
+  bool output_positional_ = false;
   std::string kv_default_, json_keys_;
   std::vector<Output_decl> outputs_;
   std::vector<Declared> specific_;
@@ -153,6 +156,10 @@ public:
   }
   double get_double(const std::string& name, double fallback) const {
     return args_.get_double(name, fallback);
+  }
+  /// A fraction given as a number or a percentage: "0.3" or "30%".
+  double get_fraction(const std::string& name, double fallback) const {
+    return args_.get_fraction(name, fallback);
   }
 
 private:

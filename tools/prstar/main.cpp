@@ -7,6 +7,8 @@
 
 #include "commands.h"
 
+#include <CGAL/version.h>
+
 #ifdef PRSTAR_WITH_MPI
 #include <CGAL/PR_star_octree/internal/mpi_communication.h>
 #include <mpi.h>
@@ -30,7 +32,8 @@ std::string main_usage(const std::vector<prstar::Command>& commands) {
   for (const prstar::Command& c : commands)
     s += "  " + c.name() + std::string(c.name().size() < 11 ? 11 - c.name().size() : 1, ' ') + c.summary() +
          '\n';
-  s += "\nRun 'prstar COMMAND --help' for the options of a command.\n";
+  s += "\nRun 'prstar COMMAND --help' or 'prstar help COMMAND' for the options of a command,\n"
+       "'prstar --version' for the version.\n";
 #ifdef PRSTAR_WITH_MPI
   s += "Under mpirun (mpirun -np N prstar COMMAND ...), stats, boundary, curvature and validate run\n"
        "distributed over the ranks, with the same options and results; -o also takes OUT.pvtu (one\n"
@@ -39,6 +42,26 @@ std::string main_usage(const std::vector<prstar::Command>& commands) {
   return s + prstar::mesh_formats() +
          "Exit status: 0 success, 1 error, 2 usage error, 3 (validate) the mesh is not valid,\n"
          "4 (simplify) stopped before the target.\n";
+}
+
+// The one-line report of a usage error, and where to read more.
+void usage_error(const prstar::Command& c, const std::string& what) {
+  std::cerr << "prstar " << c.name() << ": " << what << "\n"
+            << "see 'prstar " << c.name() << " --help'\n";
+}
+
+std::string version() {
+  std::string v = "prstar " PRSTAR_VERSION " (the PR-star octree package; CGAL " CGAL_VERSION_STR;
+#ifdef PRSTAR_WITH_MPI
+  v += ", MPI";
+#endif
+#ifdef CGAL_PR_STAR_OCTREE_USE_HDF5
+  v += ", HDF5";
+#endif
+#ifdef CGAL_LINKED_WITH_TBB
+  v += ", TBB";
+#endif
+  return v + ")\n";
 }
 
 bool wants_help(int argc, char** argv) {
@@ -78,7 +101,7 @@ int run_distributed(const std::vector<prstar::Command>& commands, int argc, char
     try {
       return c.execute_distributed(c.parse(argc, argv, 2, true));
     } catch (const prstar::Usage_error& e) {
-      if (speaks) err << "prstar " << c.name() << ": " << e.what() << "\n\n" << c.help();
+      if (speaks) usage_error(c, e.what());
       return prstar::exit_usage;
     } catch (const CGAL::PR_star_octree::Distributed_error& e) {
       if (speaks) err << "prstar " << c.name() << ": " << e.what() << '\n';
@@ -96,10 +119,10 @@ int run_distributed(const std::vector<prstar::Command>& commands, int argc, char
 } // namespace
 
 int main(int argc, char** argv) {
-  std::vector<prstar::Command> commands = {prstar::demo_command(),     prstar::stats_command(),
-                                           prstar::boundary_command(), prstar::curvature_command(),
-                                           prstar::validate_command(), prstar::simplify_command(),
-                                           prstar::generate_command()};
+  std::vector<prstar::Command> commands = {
+      prstar::demo_command(),     prstar::info_command(),     prstar::convert_command(),
+      prstar::stats_command(),    prstar::boundary_command(), prstar::curvature_command(),
+      prstar::validate_command(), prstar::simplify_command(), prstar::generate_command()};
 #ifdef PRSTAR_WITH_MPI
   if (launched_by_mpirun()) {
     int provided = 0;
@@ -129,9 +152,27 @@ int run_one_process(const std::vector<prstar::Command>& commands, int argc, char
     return prstar::exit_usage;
   }
   const std::string name = argv[1];
-  if (name == "--help" || name == "-h" || name == "help") {
+  if (name == "--version" || name == "-V") {
+    std::cout << version();
+    return prstar::exit_success;
+  }
+  if (name == "help" && argc >= 3) { // prstar help COMMAND
+    for (const prstar::Command& c : commands)
+      if (c.name() == argv[2]) {
+        std::cout << c.help();
+        return prstar::exit_success;
+      }
+  }
+  if (name == "--help" || name == "-h" || (name == "help" && argc == 2)) {
     std::cout << main_usage(commands);
     return prstar::exit_success;
+  }
+  std::vector<std::string> names;
+  for (const prstar::Command& c : commands) names.push_back(c.name());
+  if (name == "help") {
+    std::cerr << "prstar help: unknown command '" << argv[2] << "'" << prstar::did_you_mean(argv[2], names)
+              << "\nsee 'prstar --help'\n";
+    return prstar::exit_usage;
   }
   for (const prstar::Command& c : commands) {
     if (name != c.name()) continue;
@@ -142,7 +183,7 @@ int run_one_process(const std::vector<prstar::Command>& commands, int argc, char
     try {
       return c.execute(c.parse(argc, argv, 2));
     } catch (const prstar::Usage_error& e) {
-      std::cerr << "prstar " << c.name() << ": " << e.what() << "\n\n" << c.help();
+      usage_error(c, e.what());
       return prstar::exit_usage;
     } catch (const std::bad_alloc&) {
       std::cerr << "prstar " << c.name() << ": out of memory\n";
@@ -152,7 +193,8 @@ int run_one_process(const std::vector<prstar::Command>& commands, int argc, char
       return prstar::exit_error;
     }
   }
-  std::cerr << "prstar: unknown command '" << name << "'\n\n" << main_usage(commands);
+  std::cerr << "prstar: unknown command '" << name << "'" << prstar::did_you_mean(name, names)
+            << "\nsee 'prstar --help'\n";
   return prstar::exit_usage;
 }
 

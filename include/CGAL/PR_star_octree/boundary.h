@@ -240,6 +240,91 @@ Boundary_counts compute_boundary(const PR_star_octree_3<GT, I>& tree, VertexType
   return r;
 }
 
+/// \ingroup PkgPRStarOctreeRef
+/// A triangle of the surface of a labelled mesh, as `boundary_surface()` reports it: a boundary
+/// triangle (a face of one tetrahedron) or an interface triangle (the common face of two
+/// tetrahedra with different labels).
+struct Surface_triangle {
+  /// the user's vertex indices, oriented so that the normal (right-hand rule) points out of the
+  /// tetrahedron labelled `inside`: out of the mesh for a boundary triangle, towards the larger
+  /// label for an interface
+  std::array<std::size_t, 3> vertices;
+  int inside;     ///< the label of the tetrahedron of a boundary triangle; the smaller label of an interface
+  int outside;    ///< the larger label of an interface; `inside` for a boundary triangle
+  bool interface; ///< between two labels (`true`) or on the boundary (`false`)
+};
+
+/// \ingroup PkgPRStarOctreeRef
+///
+/// Writes the surface of the mesh of `tree` to `out`, leaf by leaf: every boundary triangle (in one
+/// tetrahedron) and, with labels (`PR_star_octree_3::has_tetrahedron_labels()`), every triangle
+/// between two tetrahedra of different labels, each once, as a `Surface_triangle` in the user's
+/// vertex numbering.  The triangles come in leaf order, the same for every `ConcurrencyTag`.  A
+/// triangle in three or more tetrahedra (non-manifold) is not reported.
+///
+/// \param tree the octree of the mesh
+/// \param out an output iterator accepting `Surface_triangle`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{progress}
+///     \cgalParamDescription{called as `F(done, total)` after each leaf, `done` never decreasing}
+///     \cgalParamType{a callable `F(std::size_t, std::size_t)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \returns the output iterator past the last triangle
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, class I, class OutputIterator,
+          class NP = parameters::Default_named_parameters>
+OutputIterator boundary_surface(const PR_star_octree_3<GT, I>& tree, OutputIterator out,
+                                const NP& np = parameters::default_values()) {
+  using Octree = PR_star_octree_3<GT, I>;
+  const bool labelled = tree.has_tetrahedron_labels();
+  // the face of tetrahedron t opposite its k-th vertex, oriented out of t
+  auto face = [&](I t, const std::array<I, 3>& tri, int inside, int outside, bool interface) {
+    const auto& c = tree.tetrahedron(t);
+    int k = 0;
+    while (c[k] == tri[0] || c[k] == tri[1] || c[k] == tri[2]) ++k;
+    const auto& f = internal::link_face[k];
+    return Surface_triangle{
+        {{tree.original_vertex(c[f[0]]), tree.original_vertex(c[f[1]]), tree.original_vertex(c[f[2]])}},
+        inside,
+        outside,
+        interface};
+  };
+  Leaf_executor<ConcurrencyTag>().map_reduce(
+      tree, TRIANGLES, 0,
+      [&](int, const Leaf_topology<Octree>& local) {
+        std::vector<Surface_triangle> triangles;
+        for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
+          if (!local.owns_triangle(f)) continue;
+          const auto& around = local.triangle_tetrahedra(f);
+          const std::size_t n = around.size();
+          if (n == 1) {
+            const I t = *around.begin();
+            const int l = tree.tetrahedron_label(t);
+            triangles.push_back(face(t, local.triangle(f), l, l, false));
+          } else if (n == 2 && labelled) {
+            auto it = around.begin();
+            I a = *it++, b = *it;
+            int la = tree.tetrahedron_label(a), lb = tree.tetrahedron_label(b);
+            if (la == lb) continue;
+            if (lb < la) {
+              std::swap(a, b);
+              std::swap(la, lb);
+            }
+            triangles.push_back(face(a, local.triangle(f), la, lb, true));
+          }
+        }
+        return triangles;
+      },
+      [&](std::vector<Surface_triangle>&& triangles) {
+        for (const Surface_triangle& x : triangles) *out++ = x;
+      },
+      internal::Progress_reporter<NP>(np));
+  return out;
+}
+
 } // namespace PR_star_octree
 } // namespace CGAL
 

@@ -95,12 +95,21 @@ private:
 
 namespace internal {
 
-/// "1.50 GB"
+/// A byte count in the unit that shows it with three significant digits at least: "1.50 GB",
+/// "842 MB", "1.02 kB", "512 bytes" (powers of 1000, as the file sizes of `ls -h --si`).
 inline std::string gigabytes(std::size_t bytes) {
+  const char* units[] = {"kB", "MB", "GB", "TB", "PB", "EB"};
+  if (bytes < 1000) return std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes");
+  double v = static_cast<double>(bytes) / 1e3;
+  int u = 0;
+  while (v >= 999.995 && u < 5) {
+    v /= 1e3;
+    ++u;
+  }
   std::ostringstream s;
   s.setf(std::ios::fixed);
-  s.precision(2);
-  s << static_cast<double>(bytes) / 1e9 << " GB";
+  s.precision(v < 9.995 ? 2 : v < 99.95 ? 1 : 0);
+  s << v << ' ' << units[u];
   return s.str();
 }
 

@@ -18,10 +18,12 @@
 #include <CGAL/PR_star_octree/IO/internal/vtu_writer.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -210,8 +212,11 @@ void pvtu_write_through_temporary(const std::string& file, const Write& write) {
   const std::string mark = ".prstar-tmp-" + std::to_string(pid);
   const std::string tmp = has_ext ? file.substr(0, dot) + mark + file.substr(dot) : file + mark;
   try {
+    errno = 0;
     std::ofstream out(tmp, std::ios::out | std::ios::binary | std::ios::trunc);
-    if (!out) throw Write_error(file, "cannot open the file for writing");
+    if (!out)
+      throw Write_error(file, std::string("cannot open the file for writing") +
+                                  (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string()));
     write(out);
     out.flush();
     if (!out) throw Write_error(file, "error while writing");

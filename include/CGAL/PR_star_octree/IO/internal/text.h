@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cerrno>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -630,8 +631,11 @@ inline void open_for_writing(std::ofstream& out, const std::string& filename) {
   std::error_code ec;
   if (std::filesystem::is_directory(std::filesystem::path(filename), ec))
     throw Write_error(filename, "is a directory, not a file");
+  errno = 0;
   out.open(filename, std::ios::out | std::ios::binary | std::ios::trunc);
-  if (!out) throw Write_error(filename, "cannot open the file for writing");
+  if (!out)
+    throw Write_error(filename, std::string("cannot open the file for writing") +
+                                    (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string()));
 }
 
 /// Closes a file opened by `open_for_writing()`, throwing `Write_error` on failure.
