@@ -409,11 +409,11 @@ public:
       std::vector<double> v;
       v.reserve(static_cast<std::size_t>(
           std::min<unsigned long long>(expected, a.data.hdf ? expected : doc_.text().size() / 2 + 1)));
-      values<double>(a.data, expected, ("attribute '" + a.name + "'").c_str(),
+      values<double>(a.data, expected, ("attribute " + quote(a.name)).c_str(),
                      [&](const double* x, std::size_t n) { v.insert(v.end(), x, x + n); });
       if (!a.cell) {
         for (const Data_array& d : mesh.point_data)
-          if (d.name == a.name) fail(*a.data.element, "two point attributes are named '" + a.name + "'");
+          if (d.name == a.name) fail(*a.data.element, "two point attributes are named " + quote(a.name));
         mesh.point_data.push_back(Data_array{a.name, std::move(v)});
         continue;
       }
@@ -426,7 +426,7 @@ public:
         continue;
       }
       for (const Data_array& d : mesh.cell_data)
-        if (d.name == a.name) fail(*a.data.element, "two cell attributes are named '" + a.name + "'");
+        if (d.name == a.name) fail(*a.data.element, "two cell attributes are named " + quote(a.name));
       mesh.cell_data.push_back(Data_array{a.name, std::move(v)});
     }
     result = std::move(mesh);
