@@ -919,6 +919,18 @@ static void test_hand_written_data() {
     }
     CHECK((m.skipped_cells == std::map<std::string, std::size_t>{{"triangle", 1}}));
   }
+  {
+    // a repeated element tag (2.2, an element of two physical groups): a stable sort, and the element
+    // data of that tag for both
+    const Mesh m =
+        read_as("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n"
+                "5 1 1 1\n$EndNodes\n$Elements\n3\n5 4 2 1 1 1 2 3 4\n3 4 2 2 1 2 3 4 5\n"
+                "5 4 2 3 1 1 2 3 4\n$EndElements\n$ElementData\n1\n\"e\"\n1\n0\n3\n0\n1\n2\n5 0.5\n3 "
+                "0.25\n$EndElementData\n",
+                ".msh");
+    CHECK((m.tetrahedron_labels == std::vector<int>{2, 1, 3}));
+    CHECK(m.cell_data.size() == 1 && m.cell_data[0].values == std::vector<double>({0.25, 0.5, 0.5}));
+  }
   // the same in binary 4.1 and 2.2, both byte orders: 4-byte tags and doubles after a text header
   for (bool swap : {false, true})
     for (int version : {41, 22}) {

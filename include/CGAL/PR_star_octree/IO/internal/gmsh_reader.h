@@ -814,14 +814,30 @@ private:
   }
 
   /// Puts the tetrahedra in the order of their element tags when the file does not list them so
-  /// (a stable sort: equal tags keep the order of the file).
+  /// (a stable sort: equal tags keep the order of the file).  Tags that are a permutation of
+  /// consecutive integers (the files of `write_gmsh()`, whose blocks group the tetrahedra by label)
+  /// are put in place in linear time, and are then consecutive again.
   void sort_by_element_tag() {
     if (tags_consecutive_ || std::is_sorted(tet_tags_.begin(), tet_tags_.end())) return;
     const std::size_t n = tet_tags_.size();
-    std::vector<std::size_t> order(n);
-    for (std::size_t i = 0; i < n; ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(),
-                     [this](std::size_t a, std::size_t b) { return tet_tags_[a] < tet_tags_[b]; });
+    const auto mm = std::minmax_element(tet_tags_.begin(), tet_tags_.end());
+    const std::uint64_t min = *mm.first;
+    std::vector<std::size_t> order;               // order[i]: the index in the file of the i-th tetrahedron
+    bool permutation = *mm.second - min == n - 1; // unless a tag repeats
+    if (permutation) {
+      order.assign(n, n);
+      for (std::size_t i = 0; i < n && permutation; ++i) {
+        std::size_t& slot = order[static_cast<std::size_t>(tet_tags_[i] - min)];
+        permutation = slot == n;
+        slot = i;
+      }
+    }
+    if (!permutation) {
+      order.resize(n);
+      for (std::size_t i = 0; i < n; ++i) order[i] = i;
+      std::stable_sort(order.begin(), order.end(),
+                       [this](std::size_t a, std::size_t b) { return tet_tags_[a] < tet_tags_[b]; });
+    }
     {
       std::vector<typename Mesh::Tetrahedron> t(n);
       for (std::size_t i = 0; i < n; ++i) t[i] = mesh_.tetrahedra[order[i]];
@@ -831,6 +847,12 @@ private:
       std::vector<int> l(n);
       for (std::size_t i = 0; i < n; ++i) l[i] = mesh_.tetrahedron_labels[order[i]];
       mesh_.tetrahedron_labels.swap(l);
+    }
+    if (permutation) {
+      tags_consecutive_ = true;
+      first_tet_tag_ = min;
+      tet_tags_ = std::vector<std::uint64_t>();
+      return;
     }
     std::vector<std::uint64_t> g(n);
     for (std::size_t i = 0; i < n; ++i) g[i] = tet_tags_[order[i]];
