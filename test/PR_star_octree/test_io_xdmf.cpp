@@ -209,6 +209,15 @@ static void test_round_trips() {
     Mesh r3;
     IO::read_xdmf(f, r3);
     check_same(r3, m);
+    // written through a temporary and renamed (as prstar writes its outputs): the .xdmf names the
+    // final .h5
+    IO::internal::write_xdmf_file((tmp / "t.tmp.xdmf").string(), m, {}, (tmp / "t.tmp.h5").string(),
+                                  "final.h5");
+    fs::rename(tmp / "t.tmp.xdmf", tmp / "final.xdmf");
+    fs::rename(tmp / "t.tmp.h5", tmp / "final.h5");
+    Mesh r5;
+    IO::read_xdmf((tmp / "final.xdmf").string(), r5);
+    check_same(r5, m);
     // a stream cannot follow the .h5
     std::ifstream in(f);
     Mesh r4;

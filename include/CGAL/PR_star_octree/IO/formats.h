@@ -192,7 +192,9 @@ inline constexpr Mesh_format<Mesh> mesh_formats[] = {
      &internal::xdmf_write_support,
      [](const std::string& f, Mesh& m) { read_xdmf(f, m); },
      [](std::istream& in, Mesh& m, const std::string& n) { read_xdmf(in, m, n); },
-     &internal::write_xdmf_file<Mesh>},
+     [](const std::string& f, const Mesh& m, const internal::Write_options& o) {
+       internal::write_xdmf_file(f, m, o);
+     }},
 };
 
 /// \ingroup PkgPRStarOctreeIO

@@ -68,8 +68,14 @@ inline std::string xdmf_h5_name(const std::string& xdmf) {
   return p.string();
 }
 
+/// Writes `filename`; the heavy data (HDF5 storage) go to `h5_file` (default `<stem>.h5`), named in
+/// the `.xdmf` as `h5_reference` (default: the file name of `h5_file`, beside the `.xdmf`).  A program
+/// that writes through a temporary and renames it (as `prstar` does) writes `TMP.xdmf` and `TMP.h5`
+/// with the reference `OUT.h5`, then renames both.
 template <class Mesh>
-void write_xdmf_file(const std::string& filename, const Mesh& mesh, const Write_options& given) {
+void write_xdmf_file(const std::string& filename, const Mesh& mesh, const Write_options& given,
+                     const std::string& h5_file = std::string(),
+                     const std::string& h5_reference = std::string()) {
   Write_options g = given;
   if (!g.has_binary && !xdmf_hdf5_available()) { // the default of a build without HDF5: inline XML
     g.has_binary = true;
@@ -79,11 +85,12 @@ void write_xdmf_file(const std::string& filename, const Mesh& mesh, const Write_
   check_named_arrays_for_writing(mesh, {}, filename);
   if (o.binary && !xdmf_hdf5_available()) throw Write_error(filename, xdmf_no_hdf5_message());
   const bool hdf = o.binary;
-  const std::string h5 = xdmf_h5_name(filename);
+  const std::string h5 = h5_file.empty() ? xdmf_h5_name(filename) : h5_file;
   if (hdf && std::filesystem::path(h5) == std::filesystem::path(filename))
     throw Write_error(filename,
                       "the heavy data would go to the file itself: give the file the extension .xdmf");
-  const std::string h5_ref = std::filesystem::path(h5).filename().string();
+  const std::string h5_ref =
+      h5_reference.empty() ? std::filesystem::path(h5).filename().string() : h5_reference;
   const std::size_t nv = mesh.points.size(), nt = mesh.tetrahedra.size();
 
   if (hdf) {
