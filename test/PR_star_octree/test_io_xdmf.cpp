@@ -628,6 +628,12 @@ static void test_hdf5_files() {
     Mesh m;
     IO::read_xdmf(put("ok32.xdmf", h5_xdmf("ok32", "5 3", "8")), m);
     CHECK(m.points.size() == 5 && m.tetrahedra.size() == 2);
+    // without the first '/' of the dataset path, as some writers put it
+    std::string text = h5_xdmf("ok32", "5 3", "8");
+    text.replace(text.find("ok32.h5:/g"), 10, "ok32.h5:g");
+    Mesh m2;
+    IO::read_xdmf(put("noslash.xdmf", text), m2);
+    CHECK(m2.points == m.points);
   }
   const auto error = [&](const std::string& stem, const std::string& gd, const std::string& td,
                          const std::string& what) {

@@ -547,8 +547,10 @@ private:
     std::string storage;
     const std::string_view ref = trim(doc_.element_text(e, storage));
     r.reference = std::string(ref);
-    const std::size_t colon = ref.find(":/");
-    if (colon == std::string_view::npos || colon == 0)
+    // FILE:/path, or FILE:path (some writers leave the first '/' out)
+    std::size_t colon = ref.find(":/");
+    if (colon == std::string_view::npos) colon = ref.rfind(':');
+    if (colon == std::string_view::npos || colon == 0 || colon + 1 == ref.size())
       fail(e, std::string(what) + ": the HDF5 reference " + quote(ref) + " is not FILE.h5:/path/to/dataset");
     if (stream_)
       fail(e, std::string(what) + ": the values are in the HDF5 file '" + std::string(ref.substr(0, colon)) +
@@ -557,6 +559,7 @@ private:
     r.h5_file =
         h5.is_absolute() || folder_.empty() ? h5.string() : (std::filesystem::path(folder_) / h5).string();
     r.dataset = std::string(ref.substr(colon + 1));
+    if (r.dataset[0] != '/') r.dataset.insert(r.dataset.begin(), '/');
     if (!xdmf_hdf5_available()) throw Read_error(name_, 0, xdmf_no_hdf5_message());
     const Xdmf_h5_info info = h5_.info(r.h5_file, r.dataset, r.reference, e.line);
     r.kind = info.kind;
