@@ -620,7 +620,7 @@ static void test_round_trips() {
       __LINE__, [&] { IO::write_medit((tmp / "no_such_dir" / "x.mesh").string(), m); }, "cannot open");
   expect_write_error(
       __LINE__, [&] { IO::write_tetrahedral_mesh((tmp / "x.ply").string(), m); },
-      "supported are .vtu, .vtk, .node/.ele, .mesh, .meshb, .msh, .off/.ts, .xdmf");
+      "supported are .vtu, .vtk, .node/.ele, .mesh, .meshb, .msh, .off/.ts, .xdmf/.xmf");
   expect_write_error(
       __LINE__,
       [&] {
@@ -639,7 +639,7 @@ static void test_round_trips() {
         !IO::is_writable_extension("x.vtu/y"));
   EXPECT_ERROR(put("mesh.xyz", "1"), read_any,
                {"unknown file extension '.xyz'",
-                "supported are .vtu, .vtk, .node/.ele, .mesh, .meshb, .msh, .off/.ts, .xdmf"});
+                "supported are .vtu, .vtk, .node/.ele, .mesh, .meshb, .msh, .off/.ts, .xdmf/.xmf"});
 }
 
 // ------------------------------------------------------------------------------------------------

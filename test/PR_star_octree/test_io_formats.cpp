@@ -125,8 +125,8 @@ static void test_table() {
   CHECK(IO::find_mesh_format<Mesh>("x.ply") == nullptr && IO::find_mesh_format<Mesh>("vtu") == nullptr &&
         IO::find_mesh_format<Mesh>("dir.vtu/file") == nullptr);
   CHECK_EQUAL(IO::mesh_format_extensions(),
-              std::string(".vtu, .vtk, .node/.ele, .mesh, .meshb, .msh, .off/.ts, .xdmf"));
-  CHECK_EQUAL(IO::mesh_format_extensions(true), std::string(".vtu, .vtk, .node/.ele, .msh, .xdmf"));
+              std::string(".vtu, .vtk, .node/.ele, .mesh, .meshb, .msh, .off/.ts, .xdmf/.xmf"));
+  CHECK_EQUAL(IO::mesh_format_extensions(true), std::string(".vtu, .vtk, .node/.ele, .msh, .xdmf/.xmf"));
   // the fuzz regression inputs are kept per format key (replayed by test_fuzz_regressions)
   const fs::path root = PRSTAR_FUZZ_REGRESSIONS;
   if (fs::is_directory(root)) {

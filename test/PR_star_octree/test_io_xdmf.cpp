@@ -204,6 +204,12 @@ static void test_round_trips() {
     IO::read_tetrahedral_mesh(f, r2);
     fs::current_path(here);
     check_same(r2, m);
+    // the other extension, through the dispatcher: its .h5 beside it
+    IO::write_tetrahedral_mesh((tmp / "other.xmf").string(), m);
+    CHECK(fs::exists(tmp / "other.h5"));
+    Mesh rx;
+    IO::read_tetrahedral_mesh((tmp / "other.xmf").string(), rx);
+    check_same(rx, m);
     // the same mesh written again over the files, through the dispatcher
     IO::write_tetrahedral_mesh(f, m, CGAL::parameters::use_binary_mode(true));
     Mesh r3;

@@ -180,7 +180,7 @@ inline constexpr Mesh_format<Mesh> mesh_formats[] = {
      [](std::istream& in, Mesh& m, const std::string& n) { read_tet_off(in, m, n); },
      &internal::write_tet_off_file<Mesh>},
     {"XDMF",
-     {"xdmf", nullptr},
+     {"xdmf", "xmf"},
      "xdmf",
      "yes (2, 3; the first grid; `Tetrahedron`, `Mixed`)",
      "yes (3.0; heavy data in `<stem>.h5`, or inline XML)",

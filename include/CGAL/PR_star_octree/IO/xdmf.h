@@ -7,8 +7,8 @@
 #define CGAL_PR_STAR_OCTREE_IO_XDMF_H
 
 /// \file xdmf.h
-/// Reading and writing XDMF files (`.xdmf`, versions 2 and 3) of tetrahedral meshes, with their heavy
-/// data inline in the XML or in an HDF5 file, as ParaView, meshio and DOLFINx write them.
+/// Reading and writing XDMF files (`.xdmf` or `.xmf`, versions 2 and 3) of tetrahedral meshes, with their
+/// heavy data inline in the XML or in an HDF5 file, as ParaView, meshio and DOLFINx write them.
 ///
 /// The HDF5 part needs the HDF5 C library: it is compiled only when the macro
 /// `CGAL_PR_STAR_OCTREE_USE_HDF5` is defined (with HDF5's include folder and library; the CMake
@@ -44,7 +44,7 @@ inline constexpr bool xdmf_has_hdf5() {
 }
 
 /// \ingroup PkgPRStarOctreeIO
-/// Reads a tetrahedral mesh from an XDMF file (`.xdmf`, XDMF 2 or 3).
+/// Reads a tetrahedral mesh from an XDMF file (`.xdmf` or `.xmf`, XDMF 2 or 3).
 ///
 /// The grid read is the first `<Grid>` of the `<Domain>`; for a `Collection` (a temporal series,
 /// as meshio's `TimeSeriesWriter` and DOLFINx write them) or a `Tree`, its first grid, recursively;
