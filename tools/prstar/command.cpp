@@ -17,6 +17,8 @@
 #include <cstdio>
 #include <iostream>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <new>
 #include <sstream>
 #include <stdexcept>
@@ -93,6 +95,24 @@ std::vector<std::string> mesh_files(const std::string& name) {
   return {name};
 }
 
+// The files written for the output file name `name`: those of `mesh_files()`, and for XDMF also
+// the HDF5 file of its heavy data, NAME.h5 (written unless the XDMF is inline).
+std::vector<std::string> written_files(const std::string& name) {
+  std::vector<std::string> r = mesh_files(name);
+  const std::size_t dot = name.find_last_of('.'), slash = name.find_last_of('/');
+  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) {
+    std::string ext = name.substr(dot + 1);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == "xdmf" || ext == "xmf") r.push_back(name.substr(0, dot) + ".h5");
+  }
+  return r;
+}
+
+std::string base_name(const std::string& file) {
+  const std::size_t slash = file.find_last_of('/');
+  return slash == std::string::npos ? file : file.substr(slash + 1);
+}
+
 // The temporaries being written (at most two: TetGen's pair), removed by a fatal signal.
 char pending_temporary[2][4096];
 volatile std::sig_atomic_t pending_temporaries = 0;
@@ -118,15 +138,12 @@ void install_signal_cleanup() {
   }
 }
 
-// Throws, with the OS's reason, unless `file` (or for TetGen both files it stands for) is a
-// readable regular file.
+// Throws when `file` is a folder (a missing or unreadable file is reported by the reader, which
+// knows what it needs: for TetGen both the .node and the .ele).
 void check_readable(const std::string& file) {
-  for (const std::string& f : mesh_files(file)) {
-    struct stat st;
-    if (::stat(f.c_str(), &st) != 0) throw std::runtime_error(f + ": " + std::strerror(errno));
-    if (S_ISDIR(st.st_mode)) throw std::runtime_error(f + ": is a folder, not a mesh file");
-    if (::access(f.c_str(), R_OK) != 0) throw std::runtime_error(f + ": " + std::strerror(errno));
-  }
+  struct stat st;
+  if (::stat(file.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw std::runtime_error(file + ": is a folder, not a mesh file");
 }
 
 // Throws, with the OS's reason, when `file` cannot be created or replaced: its folder must exist
@@ -369,7 +386,7 @@ Options Command::parse(int argc, char** argv, int first, bool distributed) const
     }
     for (const std::string& in : inputs)
       for (const std::string& a : mesh_files(in))
-        for (const std::string& b : mesh_files(value))
+        for (const std::string& b : written_files(value))
           if (same_file(a, b)) throw Usage_error("the output " + value + " would overwrite the input");
     for (const auto& earlier : o.outputs_)
       if (same_file(value, earlier.second))
@@ -383,7 +400,7 @@ Options Command::parse(int argc, char** argv, int first, bool distributed) const
   // Before any work: the input can be read, the outputs can be written (the OS's reason if not).
   if (!o.input_.empty()) check_readable(o.input_);
   for (const auto& out : o.outputs_)
-    for (const std::string& f : mesh_files(out.second)) {
+    for (const std::string& f : written_files(out.second)) {
       if (!o.force_ && file_exists(f))
         throw std::runtime_error(f + ": the file exists (use --force to overwrite it)");
       check_writable(f);
@@ -538,7 +555,8 @@ void write_through_temporary(const std::string& out, const std::function<void(co
   const std::string mark = ".prstar-tmp-" + std::to_string(::getpid());
   const std::string tmp = has_ext ? out.substr(0, dot) + mark + out.substr(dot) : out + mark;
   // What the writer makes: OUT, or for TetGen OUT.node and OUT.ele (and their temporaries).
-  const std::vector<std::string> tmps = mesh_files(tmp), outs = mesh_files(out);
+  // An XDMF file's .h5 is a third companion (its name in the .xdmf is set right before the rename).
+  const std::vector<std::string> tmps = written_files(tmp), outs = written_files(out);
   install_signal_cleanup();
   pending_temporaries = 0;
   for (std::size_t i = 0; i < tmps.size() && i < 2; ++i) {
@@ -552,8 +570,21 @@ void write_through_temporary(const std::string& out, const std::function<void(co
   };
   try {
     write(tmp);
+    if (tmps.size() == 2 && outs[1].size() > 3 && outs[1].compare(outs[1].size() - 3, 3, ".h5") == 0 &&
+        file_exists(tmps[1])) {
+      // the .xdmf names its heavy data file: the final name, not the temporary's
+      std::ifstream in(tmp, std::ios::binary);
+      std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      in.close();
+      text = replace_all(text, base_name(tmps[1]) + ":", base_name(outs[1]) + ":");
+      std::ofstream o(tmp, std::ios::binary | std::ios::trunc);
+      o << text;
+      o.close();
+      if (!o) throw std::runtime_error(out + ": cannot write the output file: " + std::strerror(errno));
+    }
     for (std::size_t i = 0; i < tmps.size(); ++i)
-      if (std::rename(tmps[i].c_str(), outs[i].c_str()) != 0)
+      if (!(i >= mesh_files(tmp).size() && !file_exists(tmps[i])) && // an inline XDMF has no .h5
+          std::rename(tmps[i].c_str(), outs[i].c_str()) != 0)
         throw std::runtime_error(outs[i] + ": cannot write the output file: " + std::strerror(errno));
   } catch (const std::bad_alloc&) {
     clean();
