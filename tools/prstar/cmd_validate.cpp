@@ -18,6 +18,7 @@
 #include <iostream>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace prstar {
@@ -242,8 +243,12 @@ int run_validate(const Options& o) {
   Mesh mesh = read_mesh(input, progress);
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
-  const Octree tree(CGAL::PR_star_octree::make_input(mesh.points, mesh.tetrahedra),
-                    params::bucket_size(kv).maximum_depth(o.max_depth()));
+  // Without -o the octree takes the mesh over (no second copy of V and T); with it, the mesh is kept
+  // as read, to be written with the arrays `problem`.
+  const auto np = params::bucket_size(kv).maximum_depth(o.max_depth());
+  const Octree tree = out.empty()
+                          ? Octree(std::move(mesh), np)
+                          : Octree(CGAL::PR_star_octree::make_input(mesh.points, mesh.tetrahedra), np);
   progress.phase("checking the mesh");
   std::vector<Problem> problems;
   const auto r = CGAL::PR_star_octree::check_validity(
