@@ -129,16 +129,9 @@ public:
   }
   double get_double(const std::string& name, double fallback) const {
     if (!has(name)) return fallback;
-    const std::string s = get(name);
-    std::size_t used = 0;
     double d = 0;
-    try {
-      d = std::stod(s, &used);
-    } catch (...) {
-      used = 0;
-    }
-    if (used != s.size() || !std::isfinite(d))
-      throw Usage_error("option " + name + ": '" + s + "' is not a number");
+    if (!parse_finite(get(name), d))
+      throw Usage_error("option " + name + ": '" + get(name) + "' is not a number");
     return d;
   }
   /// A fraction in [0, 1] given as a number ("0.3") or a percentage ("30%").
@@ -147,14 +140,8 @@ public:
     std::string s = get(name);
     const bool percent = !s.empty() && s.back() == '%';
     if (percent) s.pop_back();
-    std::size_t used = 0;
     double d = 0;
-    try {
-      d = std::stod(s, &used);
-    } catch (...) {
-      used = 0;
-    }
-    if (s.empty() || used != s.size() || !std::isfinite(d))
+    if (!parse_finite(s, d))
       throw Usage_error("option " + name + ": '" + get(name) + "' is not a fraction (e.g. 0.3 or 30%)");
     return percent ? d / 100 : d;
   }
@@ -165,6 +152,16 @@ private:
     for (const std::string& x : v)
       if (x == s) return true;
     return false;
+  }
+  // `s` is a finite number and nothing else
+  static bool parse_finite(const std::string& s, double& d) {
+    std::size_t used = 0;
+    try {
+      d = std::stod(s, &used);
+    } catch (...) {
+      return false;
+    }
+    return !s.empty() && used == s.size() && std::isfinite(d);
   }
   static bool is_number(const std::string& s) {
     return s.size() > 1 && (std::isdigit(static_cast<unsigned char>(s[1])) || s[1] == '.');
