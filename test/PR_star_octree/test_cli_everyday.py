@@ -174,6 +174,28 @@ check({x["label"]: x["tetrahedra"] for x in j["labels"]} == {1: int((labels == 1
       "info: labels")
 check(j["orientation"] == {"positive": len(tets), "negative": 0, "flat": 0}, "info: orientation")
 check(sum(j["quality"]["radius_ratio_histogram"]) == len(tets), "info: histogram")
+# the shape measures recomputed with numpy: dihedral angles from the face normals, radius ratio 3 r / R
+X = pts[tets]
+dihedrals = []
+for a, b in ((0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)):  # the edge ab; c, d the other two
+    c, d = [k for k in range(4) if k not in (a, b)]
+    e = X[:, b] - X[:, a]
+    n1, n2 = np.cross(e, X[:, c] - X[:, a]), np.cross(e, X[:, d] - X[:, a])
+    cos = np.einsum("ij,ij->i", n1, n2) / np.linalg.norm(n1, axis=1) / np.linalg.norm(n2, axis=1)
+    dihedrals.append(np.degrees(np.arccos(np.clip(cos, -1, 1))))
+dihedrals = np.array(dihedrals)
+A, B, C = X[:, 1] - X[:, 0], X[:, 2] - X[:, 0], X[:, 3] - X[:, 0]
+six_v = np.abs(np.einsum("ij,ij->i", A, np.cross(B, C)))
+area2 = sum(np.linalg.norm(np.cross(X[:, q] - X[:, p], X[:, r] - X[:, p]), axis=1)
+            for p, q, r in ((0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)))
+centre = (np.einsum("ij,ij->i", A, A)[:, None] * np.cross(B, C) + np.einsum("ij,ij->i", B, B)[:, None] *
+          np.cross(C, A) + np.einsum("ij,ij->i", C, C)[:, None] * np.cross(A, B)) / (2 * six_v[:, None])
+rr = 3 * (six_v / area2) / np.linalg.norm(centre, axis=1)
+q = j["quality"]
+check(abs(q["min_dihedral"] - dihedrals.min()) < 1e-9 and abs(q["max_dihedral"] - dihedrals.max()) < 1e-9 and
+      abs(q["min_radius_ratio"] - rr.min()) < 1e-9 and
+      q["radius_ratio_histogram"] == np.histogram(np.minimum(rr, 1), bins=10, range=(0, 1))[0].tolist(),
+      "info: quality against numpy: %s" % q)
 pd = {x["name"]: x for x in j["point_data"]}
 check(pd["scalar"]["min"] == scalar.min() and pd["scalar"]["max"] == scalar.max() and pd["scalar"]["type"] == "real",
       "info: point data range")
