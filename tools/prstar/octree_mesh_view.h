@@ -140,7 +140,8 @@ public:
 /// Writes the mesh of `tree` with its `arrays` then `extra` (point arrays in the user's order) to
 /// `out`, one of `point_data_outputs()`, through a temporary (see `write_through_temporary`): the
 /// VTK writers take `extra` as their extra point data, TetGen's writes every point array as a node
-/// attribute, gmsh's as a `$NodeData` view.  `view.point_data` is given back as it was.
+/// attribute, gmsh's as a `$NodeData` view, XDMF's as a `Node` attribute.  `view.point_data` is
+/// given back as it was.
 template <class Octree>
 void write_octree_mesh(const std::string& out, Octree_mesh_view<Octree>& view,
                        std::vector<CGAL::PR_star_octree::Point_data_array>& extra) {
@@ -151,7 +152,7 @@ void write_octree_mesh(const std::string& out, Octree_mesh_view<Octree>& view,
       IO::write_vtu(tmp, view, extra);
     } else if (ext == "vtk") {
       IO::write_vtk(tmp, view, extra);
-    } else if (ext == "node" || ext == "ele" || ext == "msh") {
+    } else if (ext == "node" || ext == "ele" || ext == "msh" || ext == "xdmf" || ext == "xmf") {
       const std::size_t own = view.point_data.size();
       for (auto& a : extra) view.point_data.push_back(std::move(a));
       const auto give_back = [&] {
@@ -161,6 +162,8 @@ void write_octree_mesh(const std::string& out, Octree_mesh_view<Octree>& view,
       try {
         if (ext == "msh")
           IO::write_gmsh(tmp, view);
+        else if (ext == "xdmf" || ext == "xmf")
+          IO::write_xdmf(tmp, view);
         else
           IO::write_tetgen(tmp, view);
       } catch (...) {
