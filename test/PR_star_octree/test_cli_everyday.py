@@ -211,6 +211,11 @@ if have_gmsh:
                 'Mesh.CharacteristicLengthMax = 0.3;\n')
     subprocess.run(["gmsh", "two.geo", "-3", "-format", "msh41", "-o", "two.msh"], cwd=WORK, capture_output=True,
                    check=True)
+    # with every element saved (triangles, lines, points too): what is not a tetrahedron is named
+    subprocess.run(["gmsh", "two.geo", "-3", "-save_all", "-format", "msh41", "-o", "all.msh"], cwd=WORK,
+                   capture_output=True, check=True)
+    r = prstar("convert", "all.msh", "all.vtu", "--strict", expect=1)
+    check("triangle" in r.stderr and not os.path.exists(path("all.vtu")), "convert --strict, triangles: " + r.stderr)
     g = meshio.read(path("two.msh"))
     j = json.loads(prstar("info", "two.msh", "--json").stdout)
     names = {int(v[0]): k for k, v in g.field_data.items()}

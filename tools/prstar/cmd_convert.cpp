@@ -160,17 +160,23 @@ int run_convert(const Options& o) {
     Mesh back;
     PIO::read_tetrahedral_mesh(tmp, back);
     c = compare(mesh, back);
+    if (!mesh.skipped_cells.empty()) { // the package keeps tetrahedra only
+      std::string what;
+      for (const auto& x : mesh.skipped_cells)
+        what += (what.empty() ? "" : ", ") + std::to_string(x.second) + " " + x.first + "(s)";
+      c.dropped.push_back("the cells other than tetrahedra (" + what +
+                          "; the package keeps tetrahedra only)");
+    }
     if (!c.dropped.empty() && o.flag("--strict")) {
       std::string what;
       for (const std::string& d : c.dropped) what += "; " + d;
-      throw std::runtime_error(out + ": the " + std::string(target->name) + " format cannot hold" +
-                               what.substr(1) + " (--strict: nothing written)");
+      throw std::runtime_error(out + ": not kept:" + what.substr(1) + " (--strict: nothing written)");
     }
   });
   progress.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const std::string& d : c.dropped)
-    std::cerr << "prstar convert: " << out << ": the " << target->name << " format drops " << d << '\n';
+    std::cerr << "prstar convert: " << out << ": not kept (" << target->name << "): " << d << '\n';
   if (o.json()) {
     Json j;
     j.begin_object()

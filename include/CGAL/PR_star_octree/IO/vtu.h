@@ -104,7 +104,7 @@ void write_vtu_stream(std::ostream& out, const Mesh& mesh, const std::vector<Dat
   buf += "\">\n";
   if (!data.empty()) {
     buf += "      <PointData Scalars=\"";
-    vtu_escape(buf, data.front()->name);
+    xml_escape(buf, data.front()->name);
     buf += "\">\n";
     for (const Data_array* a : data)
       w.write<double>("Float64", a->name, 1, nv, [&](std::size_t i) { return a->values[i]; });

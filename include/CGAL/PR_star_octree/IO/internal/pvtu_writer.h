@@ -134,7 +134,7 @@ inline void pvtu_section_attributes(std::string& buf, Pvtu_array::Section sectio
   if (section == Pvtu_array::cell_data && p.global_cell_ids != nullptr) buf += " GlobalIds=\"GlobalCellIds\"";
   if (section == Pvtu_array::cell_data && p.labels != nullptr) {
     buf += " Scalars=\"";
-    vtu_escape(buf, p.label_name);
+    xml_escape(buf, p.label_name);
     buf += '"';
   }
 }
@@ -149,7 +149,7 @@ inline void pvtu_array_element(std::string& buf, const Pvtu_array& a, const char
   buf += a.type;
   if (a.id_type) buf += "\" IdType=\"1";
   buf += "\" Name=\"";
-  vtu_escape(buf, a.name);
+  xml_escape(buf, a.name);
   buf += '"';
   if (a.components != 1) {
     buf += " NumberOfComponents=\"";
@@ -337,7 +337,7 @@ inline void write_pvtu(const std::string& file, const std::vector<std::string>& 
     pvtu_sections(buf, arrays, p, true);
     for (const std::string& s : piece_files) {
       buf += "    <Piece Source=\"";
-      vtu_escape(buf, s);
+      xml_escape(buf, s);
       buf += "\"/>\n";
       flush_buffer(out, buf, file);
     }

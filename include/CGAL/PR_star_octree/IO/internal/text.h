@@ -626,6 +626,31 @@ std::vector<const Data_array*> check_named_arrays_for_writing(const Mesh& mesh,
   return data;
 }
 
+/// Appends `s` to `out` as an XML attribute value (`&`, `<`, `>`, `"` and `'` escaped).
+inline void xml_escape(std::string& out, const std::string& s) {
+  for (char c : s) {
+    switch (c) {
+    case '&':
+      out += "&amp;";
+      break;
+    case '<':
+      out += "&lt;";
+      break;
+    case '>':
+      out += "&gt;";
+      break;
+    case '"':
+      out += "&quot;";
+      break;
+    case '\'':
+      out += "&apos;";
+      break;
+    default:
+      out += c;
+    }
+  }
+}
+
 /// Opens `filename` for writing, throwing `Write_error` on failure.
 inline void open_for_writing(std::ofstream& out, const std::string& filename) {
   std::error_code ec;

@@ -27,30 +27,6 @@ namespace PR_star_octree {
 namespace IO {
 namespace internal {
 
-inline void vtu_escape(std::string& out, const std::string& s) {
-  for (char c : s) {
-    switch (c) {
-    case '&':
-      out += "&amp;";
-      break;
-    case '<':
-      out += "&lt;";
-      break;
-    case '>':
-      out += "&gt;";
-      break;
-    case '"':
-      out += "&quot;";
-      break;
-    case '\'':
-      out += "&apos;";
-      break;
-    default:
-      out += c;
-    }
-  }
-}
-
 /// Writes one ascii DataArray: `get(i)` gives value `i` (of `count`) as `T`.
 template <class T, class Get>
 void vtu_write_ascii_array(std::ostream& out, std::string& buf, const std::string& file, const char* vtk_type,
@@ -61,7 +37,7 @@ void vtu_write_ascii_array(std::ostream& out, std::string& buf, const std::strin
   buf += '"';
   if (!array_name.empty()) {
     buf += " Name=\"";
-    vtu_escape(buf, array_name);
+    xml_escape(buf, array_name);
     buf += '"';
   }
   if (components != 1) {
@@ -182,7 +158,7 @@ public:
     buf_ += '"';
     if (!array_name.empty()) {
       buf_ += " Name=\"";
-      vtu_escape(buf_, array_name);
+      xml_escape(buf_, array_name);
       buf_ += '"';
     }
     if (components != 1) {

@@ -39,28 +39,6 @@ inline namespace xdmf_with_hdf5 {
 inline namespace xdmf_without_hdf5 {
 #endif
 
-/// XML-escapes an attribute value.
-inline void xdmf_escape(std::string& out, const std::string& s) {
-  for (char c : s) {
-    switch (c) {
-    case '&':
-      out += "&amp;";
-      break;
-    case '<':
-      out += "&lt;";
-      break;
-    case '>':
-      out += "&gt;";
-      break;
-    case '"':
-      out += "&quot;";
-      break;
-    default:
-      out += c;
-    }
-  }
-}
-
 /// The HDF5 file of an XDMF file: `<stem>.h5` beside it.
 inline std::string xdmf_h5_name(const std::string& xdmf) {
   std::filesystem::path p(xdmf);
@@ -132,7 +110,7 @@ void write_xdmf_file(const std::string& filename, const Mesh& mesh, const Write_
     buf += "\" Format=\"";
     buf += hdf ? "HDF\">" : "XML\">";
     if (hdf) {
-      xdmf_escape(buf, h5_ref + ":" + path);
+      xml_escape(buf, h5_ref + ":" + path);
     } else {
       const std::size_t per_row = columns == 0 ? 1 : columns;
       for (std::size_t r = 0; r < rows; ++r) {
@@ -165,7 +143,7 @@ void write_xdmf_file(const std::string& filename, const Mesh& mesh, const Write_
   buf += "      </Geometry>\n";
   const auto attribute = [&](const std::string& name, const char* center) {
     buf += "      <Attribute Name=\"";
-    xdmf_escape(buf, name);
+    xml_escape(buf, name);
     buf += "\" AttributeType=\"Scalar\" Center=\"";
     buf += center;
     buf += "\">\n";
