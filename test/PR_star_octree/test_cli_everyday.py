@@ -304,7 +304,7 @@ for c in ["info", "stats", "boundary", "curvature", "validate"]:
     r = prstar(c, "no_such_file.vtu", expect=1)
     check("no_such_file.vtu" in r.stderr and "no such file" in r.stderr.lower(), c + ": missing file: " + r.stderr)
     r = prstar(c, ".", expect=1)
-    check("is a folder" in r.stderr, c + ": a folder: " + r.stderr)
+    check("is a directory" in r.stderr, c + ": a directory: " + r.stderr)
 r = prstar("stats", "source.vtu", "--kvv", "3", expect=2)
 check("(did you mean --kv?)" in r.stderr, "did you mean --kv: " + r.stderr)
 r = prstar("stast", expect=2)

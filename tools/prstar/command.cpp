@@ -143,7 +143,7 @@ void install_signal_cleanup() {
 void check_readable(const std::string& file) {
   struct stat st;
   if (::stat(file.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    throw std::runtime_error(file + ": is a folder, not a mesh file");
+    throw std::runtime_error(file + ": is a directory, not a mesh file");
 }
 
 // Throws, with the OS's reason, when `file` cannot be created or replaced: its folder must exist
@@ -152,7 +152,7 @@ void check_readable(const std::string& file) {
 void check_writable(const std::string& file) {
   struct stat st;
   if (::stat(file.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    throw std::runtime_error(file + ": is a folder; give a file name");
+    throw std::runtime_error(file + ": is a directory, not a file");
   const std::size_t slash = file.find_last_of('/');
   const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : file.substr(0, slash);
   if (::stat(folder.c_str(), &st) != 0)
