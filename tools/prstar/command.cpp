@@ -99,12 +99,9 @@ std::vector<std::string> mesh_files(const std::string& name) {
 // the HDF5 file of its heavy data, NAME.h5 (written unless the XDMF is inline).
 std::vector<std::string> written_files(const std::string& name) {
   std::vector<std::string> r = mesh_files(name);
-  const std::size_t dot = name.find_last_of('.'), slash = name.find_last_of('/');
-  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) {
-    std::string ext = name.substr(dot + 1);
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == "xdmf" || ext == "xmf") r.push_back(name.substr(0, dot) + ".h5");
-  }
+  const auto* format = CGAL::PR_star_octree::IO::find_mesh_format<>(name);
+  if (format != nullptr && std::string(format->key) == "xdmf")
+    r.push_back(CGAL::PR_star_octree::IO::internal::xdmf_h5_name(name)); // the writer's own rule
   return r;
 }
 
