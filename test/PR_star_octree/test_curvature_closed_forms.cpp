@@ -23,7 +23,45 @@
 #include <string>
 #include <vector>
 
+namespace prstar_test_meshes {
+
+using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
+
+// The six tetrahedra of the Kuhn split of the unit cube with lowest corner (x, y, z) (the six
+// monotone paths to the opposite corner); `id` numbers the grid points.
+template <class Id>
+void kuhn_cube(Mesh& m, int x, int y, int z, Id id) {
+  const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const auto& p : paths) {
+    int c[3] = {x, y, z};
+    Mesh::Tetrahedron t;
+    t[0] = id(c[0], c[1], c[2]);
+    for (int s = 0; s < 3; ++s) {
+      ++c[p[s]];
+      t[s + 1] = id(c[0], c[1], c[2]);
+    }
+    m.tetrahedra.push_back(t);
+  }
+}
+
+// n x n x n unit cubes, each split into six tetrahedra around its diagonal (a conforming mesh).
+Mesh cube_grid(int n) {
+  Mesh m;
+  for (int z = 0; z <= n; ++z)
+    for (int y = 0; y <= n; ++y)
+      for (int x = 0; x <= n; ++x) m.points.emplace_back(x, y, z);
+  auto id = [n](int x, int y, int z) { return std::uint32_t(x + (n + 1) * (y + (n + 1) * z)); };
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) kuhn_cube(m, x, y, z, id);
+  return m;
+}
+
+} // namespace prstar_test_meshes
+
 namespace {
+
+using prstar_test_meshes::cube_grid;
 
 using Mesh = CGAL::PR_star_octree::Indexed_tetrahedral_mesh<>;
 using Octree = CGAL::PR_star_octree_3<>;
@@ -182,36 +220,6 @@ Mesh regular_tetrahedron() {
   Mesh m;
   m.points = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
   m.tetrahedra = {{0, 1, 2, 3}};
-  return m;
-}
-
-// The six tetrahedra of the Kuhn split of the unit cube with lowest corner (x, y, z) (the six
-// monotone paths to the opposite corner); `id` numbers the grid points.
-template <class Id>
-void kuhn_cube(Mesh& m, int x, int y, int z, Id id) {
-  const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  for (const auto& p : paths) {
-    int c[3] = {x, y, z};
-    Mesh::Tetrahedron t;
-    t[0] = id(c[0], c[1], c[2]);
-    for (int s = 0; s < 3; ++s) {
-      ++c[p[s]];
-      t[s + 1] = id(c[0], c[1], c[2]);
-    }
-    m.tetrahedra.push_back(t);
-  }
-}
-
-// n x n x n unit cubes, each split into six tetrahedra around its diagonal (a conforming mesh).
-Mesh cube_grid(int n) {
-  Mesh m;
-  for (int z = 0; z <= n; ++z)
-    for (int y = 0; y <= n; ++y)
-      for (int x = 0; x <= n; ++x) m.points.emplace_back(x, y, z);
-  auto id = [n](int x, int y, int z) { return std::uint32_t(x + (n + 1) * (y + (n + 1) * z)); };
-  for (int z = 0; z < n; ++z)
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x) kuhn_cube(m, x, y, z, id);
   return m;
 }
 

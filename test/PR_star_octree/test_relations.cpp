@@ -625,10 +625,13 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
 
 // test_curvature_closed_forms.cpp
 void test_curvature_closed_forms();
+// test_scalar_topology.cpp
+void test_scalar_topology(const prstar_test::Data_folders& data);
 
 int main(int argc, char** argv) {
   const prstar_test::Data_folders data(argc, argv);
   test_curvature_closed_forms();
+  test_scalar_topology(data);
   const std::vector<std::size_t> kvs = {1, 4, 20, 100, Octree::infinite_bucket_size};
 
   // Hand-checked: the cube in six tetrahedra, 19 edges, 18 triangles (12 on the boundary), Euler 1.

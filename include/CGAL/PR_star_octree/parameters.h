@@ -24,6 +24,9 @@ namespace PR_star_octree {
   X(with_boundary_triangles)                                                                                 \
   X(boundary_triangles_output)                                                                               \
   X(problems_output)                                                                                         \
+  X(critical_points_output)                                                                                  \
+  X(persistence_threshold)                                                                                   \
+  X(arcs_output)                                                                                             \
   X(target_fraction)                                                                                         \
   X(max_edge_length)                                                                                         \
   X(max_rounds)                                                                                              \
@@ -80,6 +83,8 @@ CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_TAG)
 /// | `with_boundary_triangles(bool)` | `compute_boundary()` | `true` |
 /// | `boundary_triangles_output(OutputIterator)` | `compute_boundary()` | none |
 /// | `problems_output(OutputIterator)` | `check_validity()` (one process) | none |
+/// | `critical_points_output(OutputIterator)` | `compute_critical_points()` | none |
+/// | `persistence_threshold(double)`, `arcs_output(OutputIterator)` | `compute_morse_complexes()` | 0, none |
 /// | `domain_curvature_map(PMap)`, `vertex_type_map(PMap)` | `compute_discrete_distortion()` | none |
 /// | `progress(F)` | every leaf-streaming function, `simplify()` | none |
 /// | `target_fraction`, `max_edge_length`, `max_rounds`, `priority`, `quality_measure`, `quality_floor`, `feature_angle`, `max_boundary_error`, `collapse_priority`, `collapse_placement` | `simplify()` (see its documentation) | |

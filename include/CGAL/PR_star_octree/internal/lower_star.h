@@ -1,0 +1,451 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_INTERNAL_LOWER_STAR_H
+#define CGAL_PR_STAR_OCTREE_INTERNAL_LOWER_STAR_H
+
+// The per-vertex work of the scalar-field topology (scalar_topology.h): the lower and upper links
+// of a vertex (its critical type) and the discrete gradient of its lower star (Robins, Wood and
+// Sheppard 2011, ProcessLowerStars), both from the star of the vertex alone.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace PR_star_octree {
+namespace internal {
+
+// The total order of the vertices: the field value, then the user's vertex index (simulation of
+// simplicity), so that no two vertices compare equal.
+template <class Octree>
+class Field_order {
+public:
+  using Index = typename Octree::Index;
+
+  Field_order() = default;
+  // `value(v)` gives the field at vertex `v` of the octree's numbering.
+  template <class ValueAt>
+  Field_order(const Octree& tree, const ValueAt& value) : tree_(&tree), values_(tree.number_of_vertices()) {
+    for (std::size_t v = 0; v < values_.size(); ++v) {
+      const double x = static_cast<double>(value(static_cast<Index>(v)));
+      if (!std::isfinite(x))
+        throw std::invalid_argument("the scalar field is not finite at vertex " +
+                                    std::to_string(tree.original_vertex(static_cast<Index>(v))));
+      values_[v] = x == 0 ? 0.0 : x; // -0 is 0
+    }
+  }
+  const Octree& octree() const { return *tree_; }
+  double value(Index v) const { return values_[v]; }
+  std::size_t key(Index v) const { return static_cast<std::size_t>(tree_->original_vertex(v)); }
+  bool less(Index a, Index b) const {
+    const double fa = values_[a], fb = values_[b];
+    return fa < fb || (fa == fb && key(a) < key(b));
+  }
+  std::size_t memory_bytes() const { return values_.capacity() * sizeof(double); }
+
+private:
+  const Octree* tree_ = nullptr;
+  std::vector<double> values_;
+};
+
+// A tiny union-find over the neighbours of one vertex.
+struct Small_union_find {
+  std::vector<std::uint32_t> parent;
+  void reset(std::size_t n) {
+    parent.resize(n);
+    for (std::size_t i = 0; i < n; ++i) parent[i] = static_cast<std::uint32_t>(i);
+  }
+  std::uint32_t find(std::uint32_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
+  }
+};
+
+// What the links of one vertex say: the numbers of connected components of its lower and upper
+// links, a representative of each component (the lowest vertex of each lower component, the
+// highest of each upper component, in the field order), and the lowest lower and highest upper
+// neighbours (the steepest descent and ascent along the edges).
+template <class Index>
+struct Link_result {
+  unsigned lower_components = 0, upper_components = 0;
+  std::vector<Index> lower_representatives, upper_representatives;
+  Index lowest_lower = Index(-1), highest_upper = Index(-1);
+};
+
+// The scratch space of the per-vertex work, one per thread.
+template <class Octree>
+class Lower_star_processor {
+public:
+  using Index = typename Octree::Index;
+  static constexpr Index none = Index(-1);
+
+  // A simplex of the lower star of v other than v: v and 1, 2 or 3 lower neighbours, given by
+  // their ranks among the lower neighbours (rank 0 is the lowest), in decreasing order.
+  struct Cell {
+    std::uint8_t dimension = 0;                   // 1, 2, 3
+    std::uint8_t state = 0;                       // 0 unclassified, 1 paired, 2 critical
+    std::array<std::uint16_t, 3> rank{{0, 0, 0}}; // decreasing; unused ones 0
+    std::int32_t partner = -1;                    // the cell it is paired with (-2: v itself)
+    Index tetrahedron = none;                     // a tetrahedron: its index
+  };
+
+  // The link analysis of `v`, whose star is `star` (tetrahedron indices).
+  template <class Star>
+  const Link_result<Index>& analyse_links(const Field_order<Octree>& order, Index v, const Star& star) {
+    collect_neighbours(order.octree(), v, star);
+    const std::size_t n = nb_.size();
+    lower_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) lower_[i] = order.less(nb_[i], v);
+    uf_.reset(n);
+    for (const auto& e : link_edges_)
+      if (lower_[e.first] == lower_[e.second]) uf_.unite(e.first, e.second);
+    link_ = Link_result<Index>();
+    // the representative of each component: its extreme vertex in the field order
+    rep_.assign(n, none);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t r = uf_.find(static_cast<std::uint32_t>(i));
+      Index& rep = rep_[r];
+      if (rep == none || (lower_[i] ? order.less(nb_[i], rep) : order.less(rep, nb_[i]))) rep = nb_[i];
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (uf_.find(static_cast<std::uint32_t>(i)) != i) continue;
+      if (lower_[i]) {
+        ++link_.lower_components;
+        link_.lower_representatives.push_back(rep_[i]);
+        if (link_.lowest_lower == none || order.less(rep_[i], link_.lowest_lower))
+          link_.lowest_lower = rep_[i];
+      } else {
+        ++link_.upper_components;
+        link_.upper_representatives.push_back(rep_[i]);
+        if (link_.highest_upper == none || order.less(link_.highest_upper, rep_[i]))
+          link_.highest_upper = rep_[i];
+      }
+    }
+    return link_;
+  }
+
+  // ProcessLowerStars on the lower star of `v`.  Calls `critical(dimension, vertices, cofacets)`
+  // for each critical simplex (vertices: v first, then its other vertices in decreasing field
+  // order; cofacets: for a triangle, the tetrahedra of the star containing it), writes the corner
+  // byte of `v` in each tetrahedron of its star (`gradient[4 t + i]`, `i` the position of `v` in
+  // tetrahedron `t`) and, for each tetrahedron whose highest vertex is `v`, `parent(t, p)`: `p` the
+  // tetrahedron across the triangle `t` is paired with, `t` itself when `t` is critical, `none`
+  // when that triangle is on the boundary (or in three or more tetrahedra).
+  template <class Star, class Critical, class Parent>
+  void process_lower_star(const Field_order<Octree>& order, Index v, const Star& star, std::uint8_t* gradient,
+                          Critical&& critical, Parent&& parent) {
+    const Octree& tree = order.octree();
+    if (star.size() == 0) return; // not a vertex of the mesh
+    collect_neighbours(tree, v, star);
+    // the lower neighbours, by increasing field order: their ranks
+    low_.clear();
+    for (Index u : nb_)
+      if (order.less(u, v)) low_.push_back(u);
+    std::sort(low_.begin(), low_.end(), [&](Index a, Index b) { return order.less(a, b); });
+    if (low_.empty()) {
+      const std::array<Index, 4> c{{v, none, none, none}};
+      critical(0, c, std::array<Index, 2>{{none, none}});
+      for (auto t : star) gradient[4 * static_cast<std::size_t>(t) + position(tree.tetrahedron(t), v)] = 0;
+      return;
+    }
+    rank_of_nb_.assign(nb_.size(), -1);
+    for (std::size_t r = 0; r < low_.size(); ++r) rank_of_nb_[neighbour_id(low_[r])] = static_cast<int>(r);
+    // the cells: edges (one per lower neighbour, cell id = rank), triangles, tetrahedra
+    cells_.clear();
+    for (std::size_t r = 0; r < low_.size(); ++r) {
+      Cell c;
+      c.dimension = 1;
+      c.rank[0] = static_cast<std::uint16_t>(r);
+      cells_.push_back(c);
+    }
+    triangle_keys_.clear();
+    for (auto t : star) {
+      const auto& tv = tree.tetrahedron(t);
+      std::array<int, 3> r;
+      int k = 0;
+      for (int i = 0; i < 4; ++i)
+        if (tv[i] != v) r[k++] = rank_of_nb_[neighbour_id(tv[i])];
+      std::sort(r.begin(), r.end(), std::greater<int>());
+      for (int a = 0; a < 3; ++a)
+        for (int b = a + 1; b < 3; ++b)
+          if (r[b] >= 0) triangle_keys_.push_back(key(r[a], r[b]));
+      if (r[2] >= 0) {
+        Cell c;
+        c.dimension = 3;
+        c.rank = {{static_cast<std::uint16_t>(r[0]), static_cast<std::uint16_t>(r[1]),
+                   static_cast<std::uint16_t>(r[2])}};
+        c.tetrahedron = t;
+        cells_.push_back(c);
+      }
+    }
+    std::sort(triangle_keys_.begin(), triangle_keys_.end());
+    triangle_keys_.erase(std::unique(triangle_keys_.begin(), triangle_keys_.end()), triangle_keys_.end());
+    const std::size_t first_triangle = low_.size();
+    // cells_: edges, tetrahedra; the triangles go between them: rebuild in that order
+    std::vector<Cell>& tets = tets_;
+    tets.assign(cells_.begin() + static_cast<std::ptrdiff_t>(first_triangle), cells_.end());
+    cells_.resize(first_triangle);
+    for (std::uint32_t k : triangle_keys_) {
+      Cell c;
+      c.dimension = 2;
+      c.rank[0] = static_cast<std::uint16_t>(k >> 16);
+      c.rank[1] = static_cast<std::uint16_t>(k & 0xffffu);
+      cells_.push_back(c);
+    }
+    const std::size_t first_tet = cells_.size();
+    cells_.insert(cells_.end(), tets.begin(), tets.end());
+    const std::size_t n = cells_.size();
+    // faces (within the lower star, other than v) and cofaces
+    faces_.assign(n, {{-1, -1, -1}});
+    coface_offsets_.assign(n + 1, 0);
+    for (std::size_t c = first_triangle; c < n; ++c) {
+      const Cell& cell = cells_[c];
+      if (cell.dimension == 2) {
+        faces_[c] = {{cell.rank[0], cell.rank[1], -1}};
+      } else {
+        faces_[c] = {{triangle_id(cell.rank[0], cell.rank[1], first_triangle),
+                      triangle_id(cell.rank[0], cell.rank[2], first_triangle),
+                      triangle_id(cell.rank[1], cell.rank[2], first_triangle)}};
+      }
+      for (int f : faces_[c])
+        if (f >= 0) ++coface_offsets_[static_cast<std::size_t>(f) + 1];
+    }
+    for (std::size_t c = 0; c < n; ++c) coface_offsets_[c + 1] += coface_offsets_[c];
+    cofaces_.resize(coface_offsets_[n]);
+    fill_.assign(coface_offsets_.begin(), coface_offsets_.end() - 1);
+    for (std::size_t c = first_triangle; c < n; ++c)
+      for (int f : faces_[c])
+        if (f >= 0) cofaces_[fill_[static_cast<std::size_t>(f)]++] = static_cast<std::int32_t>(c);
+
+    // ProcessLowerStars: v with its lowest edge, then the two queues, by increasing G (the
+    // lexicographic order of the decreasing ranks).
+    // (binary heaps on reused buffers, smallest G on top)
+    auto greater_g = [this](std::int32_t a, std::int32_t b) { return less_g(b, a); };
+    auto push = [&](std::vector<std::int32_t>& q, std::int32_t c) {
+      q.push_back(c);
+      std::push_heap(q.begin(), q.end(), greater_g);
+    };
+    auto pop = [&](std::vector<std::int32_t>& q) {
+      std::pop_heap(q.begin(), q.end(), greater_g);
+      const std::int32_t c = q.back();
+      q.pop_back();
+      return c;
+    };
+    std::vector<std::int32_t>&pq_zero = queue_zero_, &pq_one = queue_one_;
+    pq_zero.clear();
+    pq_one.clear();
+    cells_[0].state = 1;
+    cells_[0].partner = -2;
+    for (std::int32_t e = 1; e < static_cast<std::int32_t>(first_triangle); ++e) push(pq_zero, e);
+    auto push_cofaces = [&](std::int32_t c) {
+      for (std::size_t k = coface_offsets_[c]; k < coface_offsets_[c + 1]; ++k) {
+        const std::int32_t g = cofaces_[k];
+        if (cells_[g].state == 0 && unclassified_faces(g) == 1) push(pq_one, g);
+      }
+    };
+    push_cofaces(0);
+    for (;;) {
+      while (!pq_one.empty()) {
+        const std::int32_t a = pop(pq_one);
+        if (cells_[a].state != 0) continue;
+        const int k = unclassified_faces(a);
+        if (k == 0) {
+          push(pq_zero, a);
+        } else if (k == 1) {
+          std::int32_t b = -1;
+          for (int f : faces_[a])
+            if (f >= 0 && cells_[f].state == 0) b = f;
+          cells_[a].state = cells_[b].state = 1;
+          cells_[a].partner = b;
+          cells_[b].partner = a;
+          push_cofaces(a);
+          push_cofaces(b);
+        }
+      }
+      std::int32_t g = -1;
+      while (!pq_zero.empty() && g < 0) {
+        const std::int32_t c = pop(pq_zero);
+        if (cells_[c].state == 0) g = c;
+      }
+      if (g < 0) break;
+      cells_[g].state = 2;
+      push_cofaces(g);
+    }
+
+    // the critical cells
+    for (std::size_t c = 0; c < n; ++c) {
+      if (cells_[c].state != 2) continue;
+      const Cell& cell = cells_[c];
+      std::array<Index, 4> vs{{v, none, none, none}};
+      for (int i = 0; i < cell.dimension; ++i) vs[i + 1] = low_[cell.rank[i]];
+      std::array<Index, 2> cofacets{{none, none}};
+      if (cell.dimension == 2) {
+        int k = 0;
+        for (auto t : star) {
+          if (!contains(tree.tetrahedron(t), vs[1]) || !contains(tree.tetrahedron(t), vs[2])) continue;
+          if (k < 2) cofacets[k] = t;
+          ++k;
+        }
+        if (k > 2) cofacets = {{none, none}}; // a non-manifold triangle
+        if (k == 2) { // in the field order of their fourth vertices: the same for any numbering
+          auto fourth = [&](Index t) {
+            for (Index u : tree.tetrahedron(t))
+              if (u != vs[0] && u != vs[1] && u != vs[2]) return u;
+            return none;
+          };
+          if (order.less(fourth(cofacets[1]), fourth(cofacets[0]))) std::swap(cofacets[0], cofacets[1]);
+        }
+      }
+      critical(cell.dimension, vs, cofacets);
+    }
+    // the corner bytes of v and the parents of the tetrahedra whose highest vertex is v
+    for (auto t : star) {
+      const auto& tv = tree.tetrahedron(t);
+      const int i = position(tv, v);
+      std::uint8_t byte = 0;
+      // the vertex-edge pair of v: its lowest lower neighbour
+      int slot = 0;
+      for (int j = 0; j < 4; ++j) {
+        if (j == i) continue;
+        ++slot;
+        if (tv[j] == low_[0]) byte = static_cast<std::uint8_t>(slot);
+      }
+      // the three triangles of t through v: the one opposite position m in slot s
+      int s = 0;
+      for (int m = 0; m < 4; ++m) {
+        if (m == i) continue;
+        int a = -1, b = -1; // the two other positions, a < b
+        for (int j = 0; j < 4; ++j)
+          if (j != i && j != m) (a < 0 ? a : b) = j;
+        const int ra = rank_of_nb_[neighbour_id(tv[a])], rb = rank_of_nb_[neighbour_id(tv[b])];
+        std::uint8_t code = 0;
+        if (ra >= 0 && rb >= 0) {
+          const std::int32_t f = triangle_id((std::max)(ra, rb), (std::min)(ra, rb), first_triangle);
+          const std::int32_t p = cells_[f].partner;
+          if (p >= 0 && cells_[p].dimension == 1)
+            code = cells_[p].rank[0] == ra ? 1 : 2;
+          else if (p >= 0 && cells_[p].dimension == 3 && cells_[p].tetrahedron == t)
+            code = 3;
+        }
+        byte = static_cast<std::uint8_t>(byte | (code << (2 + 2 * s)));
+        ++s;
+      }
+      gradient[4 * static_cast<std::size_t>(t) + i] = byte;
+    }
+    for (std::size_t c = first_tet; c < n; ++c) {
+      const Cell& cell = cells_[c];
+      const Index t = cell.tetrahedron;
+      if (cell.state == 2) {
+        parent(t, t);
+        continue;
+      }
+      const Cell& f = cells_[cell.partner]; // a triangle
+      const Index a = low_[f.rank[0]], b = low_[f.rank[1]];
+      Index across = none;
+      int k = 0;
+      for (auto u : star) {
+        if (u == t) continue;
+        const auto& uv = tree.tetrahedron(u);
+        if (contains(uv, a) && contains(uv, b)) across = u, ++k;
+      }
+      parent(t, k == 1 ? across : none);
+    }
+  }
+
+  std::size_t memory_bytes() const {
+    return nb_.capacity() * sizeof(Index) + cells_.capacity() * sizeof(Cell) + faces_.capacity() * 12 +
+           cofaces_.capacity() * 4 + link_edges_.capacity() * 8;
+  }
+
+private:
+  static std::uint32_t key(int hi, int lo) {
+    return (static_cast<std::uint32_t>(hi) << 16) | static_cast<std::uint32_t>(lo);
+  }
+  template <class T>
+  static int position(const T& tv, Index v) {
+    for (int i = 0; i < 4; ++i)
+      if (tv[i] == v) return i;
+    return 0;
+  }
+  template <class T>
+  static bool contains(const T& tv, Index v) {
+    return tv[0] == v || tv[1] == v || tv[2] == v || tv[3] == v;
+  }
+  std::size_t neighbour_id(Index u) const {
+    return static_cast<std::size_t>(std::lower_bound(nb_.begin(), nb_.end(), u) - nb_.begin());
+  }
+  std::int32_t triangle_id(int hi, int lo, std::size_t first_triangle) const {
+    const auto it = std::lower_bound(triangle_keys_.begin(), triangle_keys_.end(), key(hi, lo));
+    return static_cast<std::int32_t>(first_triangle + static_cast<std::size_t>(it - triangle_keys_.begin()));
+  }
+  int unclassified_faces(std::int32_t c) const {
+    int k = 0;
+    for (int f : faces_[c]) k += (f >= 0 && cells_[f].state == 0);
+    return k;
+  }
+  // G(a) < G(b): the decreasing rank sequences compared lexicographically, a prefix first
+  bool less_g(std::int32_t a, std::int32_t b) const {
+    const Cell &x = cells_[a], &y = cells_[b];
+    const int n = (std::min)(x.dimension, y.dimension);
+    for (int i = 0; i < n; ++i)
+      if (x.rank[i] != y.rank[i]) return x.rank[i] < y.rank[i];
+    return x.dimension < y.dimension;
+  }
+  // the neighbours of v (sorted) and the link edges (pairs of neighbour ids, one per link triangle
+  // side, duplicates kept)
+  template <class Star>
+  void collect_neighbours(const Octree& tree, Index v, const Star& star) {
+    nb_.clear();
+    for (auto t : star)
+      for (Index u : tree.tetrahedron(t))
+        if (u != v) nb_.push_back(u);
+    std::sort(nb_.begin(), nb_.end());
+    nb_.erase(std::unique(nb_.begin(), nb_.end()), nb_.end());
+    link_edges_.clear();
+    for (auto t : star) {
+      std::array<std::uint32_t, 3> o;
+      int k = 0;
+      for (Index u : tree.tetrahedron(t))
+        if (u != v) o[k++] = static_cast<std::uint32_t>(neighbour_id(u));
+      link_edges_.emplace_back(o[0], o[1]);
+      link_edges_.emplace_back(o[0], o[2]);
+      link_edges_.emplace_back(o[1], o[2]);
+    }
+  }
+
+  std::vector<Index> nb_, low_, rep_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> link_edges_;
+  std::vector<char> lower_;
+  std::vector<int> rank_of_nb_;
+  Small_union_find uf_;
+  Link_result<Index> link_;
+  std::vector<Cell> cells_, tets_;
+  std::vector<std::uint32_t> triangle_keys_;
+  std::vector<std::array<int, 3>> faces_;
+  std::vector<std::size_t> coface_offsets_, fill_;
+  std::vector<std::int32_t> cofaces_;
+  std::vector<std::int32_t> queue_zero_, queue_one_;
+};
+
+} // namespace internal
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_INTERNAL_LOWER_STAR_H
