@@ -163,23 +163,7 @@ int run_curvature(const Options& o) {
   auto& pd = lean ? mesh.point_data : arrays.point_data;
   const CGAL::PR_star_octree::Point_data_array* field = nullptr; // not lean: in the user's order
   if (axis < 0) {
-    auto it = field_name.empty()
-                  ? pd.begin()
-                  : std::find_if(pd.begin(), pd.end(), [&](const auto& a) { return a.name == field_name; });
-    if (it == pd.end()) {
-      std::string known;
-      for (const auto& d : pd) known += (known.empty() ? "" : ", ") + d.name;
-      throw std::runtime_error(input + ": " +
-                               (field_name.empty() ? std::string("the mesh has no point data")
-                                                   : "no point-data array named '" + field_name + "'") +
-                               (known.empty() ? "" : " (it has: " + known + ")") +
-                               "; use --field x|y|z for a coordinate");
-    }
-    field_name = it->name;
-    for (std::size_t v = 0; v < it->values.size(); ++v)
-      if (!std::isfinite(it->values[v]))
-        throw std::runtime_error(input + ": field '" + field_name + "' is not finite at vertex " +
-                                 std::to_string(v));
+    const auto it = pd.begin() + static_cast<std::ptrdiff_t>(find_point_field(pd, field_name, input));
     if (lean) { // the field alone, first: the octree's scalar field
       std::rotate(pd.begin(), it, it + 1);
       pd.resize(1);

@@ -411,6 +411,27 @@ std::string Options::output(const std::string& option) const {
   return "";
 }
 
+std::size_t find_point_field(const std::vector<CGAL::PR_star_octree::Point_data_array>& pd, std::string& name,
+                             const std::string& input) {
+  const auto it = name.empty()
+                      ? pd.begin()
+                      : std::find_if(pd.begin(), pd.end(), [&](const auto& a) { return a.name == name; });
+  if (it == pd.end()) {
+    std::string known;
+    for (const auto& d : pd) known += (known.empty() ? "" : ", ") + d.name;
+    throw std::runtime_error(input + ": " +
+                             (name.empty() ? std::string("the mesh has no point data")
+                                           : "no point-data array named '" + name + "'") +
+                             (known.empty() ? "" : " (it has: " + known + ")") +
+                             "; use --field x|y|z for a coordinate");
+  }
+  name = it->name;
+  for (std::size_t v = 0; v < it->values.size(); ++v)
+    if (!std::isfinite(it->values[v]))
+      throw std::runtime_error(input + ": field '" + name + "' is not finite at vertex " + std::to_string(v));
+  return static_cast<std::size_t>(it - pd.begin());
+}
+
 std::string point_data_outputs() {
   std::string r;
   for (const auto& f : CGAL::PR_star_octree::IO::mesh_formats<>)

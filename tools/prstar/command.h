@@ -173,6 +173,12 @@ private:
   bool force_ = false, json_ = false, quiet_ = false, quiet_silences_summary_ = false;
 };
 
+/// The point-data array of `point_data` named `name` (the first one when `name` is empty), as a
+/// position in `point_data`; `name` is set to the array's name.  Errors name `input`: no such array
+/// (with the arrays it has and the hint `--field x|y|z`), or a value that is not finite (its vertex).
+std::size_t find_point_field(const std::vector<CGAL::PR_star_octree::Point_data_array>& point_data,
+                             std::string& name, const std::string& input);
+
 /// The mesh formats read and written, for the help texts.
 std::string mesh_formats();
 /// Parses a size in bytes: "1500000000", "800M", "64G", "2T" (powers of 1024), or "unlimited".

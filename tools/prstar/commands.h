@@ -31,6 +31,8 @@ Command simplify_command();
 Command generate_command();
 Command convert_command();
 Command info_command();
+Command critical_command();
+Command morse_command();
 
 /// Builds the PR-star octree of `mesh` for each k_v and prints its statistics (a table titled
 /// `name`, or JSON): shared by stats and demo (cmd_stats.cpp).

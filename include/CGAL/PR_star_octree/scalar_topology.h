@@ -86,6 +86,8 @@ struct Critical_point {
   unsigned lower_components = 0; ///< connected components of the lower link
   unsigned upper_components = 0; ///< connected components of the upper link
   double value = 0;              ///< the field at the vertex
+  /// whether its link is not a closed surface (a vertex on the boundary of the mesh, or non-manifold)
+  bool on_boundary = false;
   /// the multiplicity of a saddle: `lower - 1` merges of the sublevel sets plus `upper - 1` splits of
   /// the superlevel sets (1 for a simple saddle, 0 for an extremum)
   unsigned multiplicity() const {
@@ -314,6 +316,7 @@ struct Topology_pass {
   using Index = typename Octree::Index;
   static constexpr Index none = Index(-1);
   std::vector<std::uint8_t> lower, upper; // link components (saturated at 255)
+  std::vector<std::uint8_t> open_link;    // 1: the link is not a closed surface
   std::vector<Index> descent, ascent;     // steepest neighbours (the vertex itself at an extremum)
   std::vector<std::uint8_t> codes;        // the gradient
   std::vector<Index> tet_parent;          // the tetrahedron across its paired triangle
@@ -332,6 +335,7 @@ Topology_pass<Octree> run_topology_pass(const Octree& tree, const Field_order<Oc
   const bool links = (work & TOPOLOGY_LINKS) != 0, gradient = (work & TOPOLOGY_GRADIENT) != 0;
   if (links) {
     pass.lower.assign(nv, 0);
+    pass.open_link.assign(nv, 0);
     pass.upper.assign(nv, 0);
     if (events) {
       pass.descent.assign(nv, Pass::none);
@@ -353,6 +357,7 @@ Topology_pass<Octree> run_topology_pass(const Octree& tree, const Field_order<Oc
             const auto& l = proc.analyse_links(order, v, star);
             pass.lower[v] = static_cast<std::uint8_t>((std::min)(l.lower_components, 255u));
             pass.upper[v] = static_cast<std::uint8_t>((std::min)(l.upper_components, 255u));
+            pass.open_link[v] = !l.closed;
             if (events) {
               pass.descent[v] = l.lower_components == 0 ? v : l.lowest_lower;
               pass.ascent[v] = l.upper_components == 0 ? v : l.highest_upper;
@@ -543,7 +548,7 @@ Critical_point_counts compute_critical_points(const PR_star_octree_3<GT, I>& tre
     const std::size_t user = static_cast<std::size_t>(tree.original_vertex(static_cast<I>(v)));
     if constexpr (!std::is_same<TypeMap, std::nullptr_t>::value) put(type_map, user, type);
     if (type != Critical_type::REGULAR)
-      points.push_back({user, type, lo, up, order.value(static_cast<I>(v))});
+      points.push_back({user, type, lo, up, order.value(static_cast<I>(v)), pass.open_link[v] != 0});
   }
   auto out = parameters::get_parameter(np, internal_np::critical_points_output);
   if constexpr (!std::is_same<decltype(out), CGAL::internal_np::Param_not_found>::value) {

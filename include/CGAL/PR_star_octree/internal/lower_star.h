@@ -87,6 +87,7 @@ struct Link_result {
   unsigned lower_components = 0, upper_components = 0;
   std::vector<Index> lower_representatives, upper_representatives;
   Index lowest_lower = Index(-1), highest_upper = Index(-1);
+  bool closed = true; // every link edge in two link triangles (an interior vertex of a manifold)
 };
 
 // The scratch space of the per-vertex work, one per thread.
@@ -117,6 +118,16 @@ public:
     for (const auto& e : link_edges_)
       if (lower_[e.first] == lower_[e.second]) uf_.unite(e.first, e.second);
     link_ = Link_result<Index>();
+    sorted_edges_.clear();
+    for (const auto& e : link_edges_)
+      sorted_edges_.push_back(e.first < e.second ? e : std::make_pair(e.second, e.first));
+    std::sort(sorted_edges_.begin(), sorted_edges_.end());
+    for (std::size_t i = 0; i < sorted_edges_.size() && link_.closed;) {
+      std::size_t j = i;
+      while (j < sorted_edges_.size() && sorted_edges_[j] == sorted_edges_[i]) ++j;
+      link_.closed = (j - i == 2);
+      i = j;
+    }
     // the representative of each component: its extreme vertex in the field order
     rep_.assign(n, none);
     for (std::size_t i = 0; i < n; ++i) {
@@ -431,7 +442,7 @@ private:
   }
 
   std::vector<Index> nb_, low_, rep_;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> link_edges_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> link_edges_, sorted_edges_;
   std::vector<char> lower_;
   std::vector<int> rank_of_nb_;
   Small_union_find uf_;
