@@ -10,6 +10,8 @@
 // of a vertex (its critical type) and the discrete gradient of its lower star (Robins, Wood and
 // Sheppard 2011, ProcessLowerStars), both from the star of the vertex alone.
 
+#include <CGAL/PR_star_octree/internal/local_complex.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -58,24 +60,6 @@ public:
 private:
   const Octree* tree_ = nullptr;
   std::vector<double> values_;
-};
-
-// A tiny union-find over the neighbours of one vertex.
-struct Small_union_find {
-  std::vector<std::uint32_t> parent;
-  void reset(std::size_t n) {
-    parent.resize(n);
-    for (std::size_t i = 0; i < n; ++i) parent[i] = static_cast<std::uint32_t>(i);
-  }
-  std::uint32_t find(std::uint32_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
-  }
 };
 
 // What the links of one vertex say: the numbers of connected components of its lower and upper
@@ -445,7 +429,7 @@ private:
   std::vector<std::pair<std::uint32_t, std::uint32_t>> link_edges_, sorted_edges_;
   std::vector<char> lower_;
   std::vector<int> rank_of_nb_;
-  Small_union_find uf_;
+  Union_find uf_; // local_complex.h
   Link_result<Index> link_;
   std::vector<Cell> cells_, tets_;
   std::vector<std::uint32_t> triangle_keys_;
