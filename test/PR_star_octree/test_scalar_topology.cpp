@@ -17,9 +17,12 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <iostream>
 #include <map>
 #include <set>
 #include <string>
@@ -503,9 +506,12 @@ void test_errors() {
 } // namespace
 
 void test_scalar_topology(const prstar_test::Data_folders& data) {
+  const auto start = std::chrono::steady_clock::now();
   test_bowl();
   test_bumps();
   test_linear();
   test_errors();
   test_files(data);
+  std::cout << "scalar topology: "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
 }

@@ -196,25 +196,6 @@ public:
 
   /// the byte of corner `i` of tetrahedron `t` (see the class description)
   std::uint8_t corner_code(Index t, int i) const { return codes_[4 * static_cast<std::size_t>(t) + i]; }
-  /// whether tetrahedron `t` is paired with one of its triangles; then `face` is the position
-  /// opposite that triangle
-  bool tetrahedron_pair(const Octree& tree, Index t, int& face) const {
-    for (int i = 0; i < 4; ++i) {
-      const std::uint8_t c = corner_code(t, i);
-      int s = 0;
-      for (int m = 0; m < 4; ++m) {
-        if (m == i) continue;
-        if (((c >> (2 + 2 * s)) & 3u) == 3u) {
-          face = m;
-          return true;
-        }
-        ++s;
-      }
-    }
-    (void)tree;
-    return false;
-  }
-
   /// the critical simplices, by dimension, each dimension in increasing order of the field (the
   /// lexicographic order of their vertices' decreasing values)
   const std::vector<Critical_simplex>& critical_simplices() const { return critical_; }

@@ -407,6 +407,10 @@ private:
   // side, duplicates kept)
   template <class Star>
   void collect_neighbours(const Octree& tree, Index v, const Star& star) {
+    if (v == collected_ && star.size() == collected_size_)
+      return; // the links and the lower star of one vertex
+    collected_ = v;
+    collected_size_ = star.size();
     nb_.clear();
     for (auto t : star)
       for (Index u : tree.tetrahedron(t))
@@ -426,6 +430,8 @@ private:
   }
 
   std::vector<Index> nb_, low_, rep_;
+  Index collected_ = none;
+  std::size_t collected_size_ = 0;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> link_edges_, sorted_edges_;
   std::vector<char> lower_;
   std::vector<int> rank_of_nb_;
