@@ -9,10 +9,12 @@
 #include <CGAL/PR_star_octree/boundary.h>
 #include <CGAL/PR_star_octree/distortion.h>
 #include <CGAL/PR_star_octree/parameters.h>
+#include <CGAL/PR_star_octree/scalar_topology.h>
 #include <CGAL/PR_star_octree/simplification.h>
 #include <CGAL/PR_star_octree/validity.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -136,6 +138,47 @@ int main(int argc, char** argv) {
     check(linear_flat, "distortion: a linear field has none at interior vertices");
     check(domain_flat, "distortion: the domain is flat at interior vertices");
     check(curved, "distortion: |p|^2 is distorted somewhere inside");
+  }
+
+  {
+    //! [topology]
+    // f: two wells, at the vertices a and b (not joined by an edge), in the user's numbering
+    const Point a(1, 1, 2), b(2, 2, 1);
+    std::vector<double> f(points.size());
+    for (std::size_t v = 0; v < points.size(); ++v)
+      f[v] = (std::min)(CGAL::squared_distance(points[v], a), CGAL::squared_distance(points[v], b));
+    std::vector<PSO::Critical_type> type(points.size()); // TTK's codes: 0 minimum ... 5 regular
+    const PSO::Critical_point_counts c =
+        PSO::compute_critical_points(tree, CGAL::make_property_map(f), CGAL::make_property_map(type));
+    const PSO::Forman_gradient<Octree> g = PSO::compute_forman_gradient(tree, CGAL::make_property_map(f));
+    // The Morse complexes; the pairs of persistence below 1.5 are cancelled, the arcs collected:
+    std::vector<PSO::Morse_arc> arcs;
+    const PSO::Morse_complexes<Octree> m = PSO::compute_morse_complexes(
+        tree, CGAL::make_property_map(f),
+        params::persistence_threshold(1.5).arcs_output(std::back_inserter(arcs)));
+    std::cout << c.minima << " minima, " << c.saddles_1 << " 1-saddles; gradient: c0 - c1 + c2 - c3 = "
+              << g.alternating_sum() << "; " << m.ascending_cells << " ascending 3-cell(s), "
+              << m.persistence_pairs.size() << " persistence pairs, " << arcs.size() << " arcs\n";
+    // m.ascending_cell[v]: the minimum whose 3-cell holds vertex v (user's numbering)
+    //! [topology]
+    auto index = [](int x, int y, int z) { return static_cast<std::size_t>(x + (n + 1) * (y + (n + 1) * z)); };
+    check(c.minima == 2 && type[index(1, 1, 2)] == PSO::Critical_type::MINIMUM &&
+              type[index(2, 2, 1)] == PSO::Critical_type::MINIMUM,
+          "topology: the two wells are the minima");
+    check(g.alternating_sum() == 1, "topology: the gradient's alternating sum is the Euler characteristic");
+    std::size_t finite = 0;
+    for (const PSO::Persistence_pair& p : m.persistence_pairs)
+      if (p.type == PSO::Persistence_pair::MINIMUM_SADDLE && !p.is_essential()) {
+        ++finite;
+        check(p.persistence() == 1.0, "topology: the wells merge at f = 1");
+      }
+    check(finite == 1, "topology: one finite minimum-saddle pair");
+    check(m.ascending_cells == 1 && m.ascending_cell[index(1, 1, 2)] == m.ascending_cell[index(2, 2, 1)],
+          "topology: one ascending 3-cell after the cancellation");
+    const auto full = PSO::compute_morse_complexes(tree, CGAL::make_property_map(f));
+    check(full.ascending_cells == 2 && full.ascending_cell[index(1, 1, 2)] == index(1, 1, 2) &&
+              full.ascending_cell[index(2, 2, 1)] == index(2, 2, 1),
+          "topology: two ascending 3-cells without cancellation");
   }
 
   {
