@@ -260,6 +260,7 @@ struct Result {
   std::vector<std::size_t> ascending, descending;
   std::size_t arcs = 0;
   std::vector<std::size_t> arc_ends;
+  long long euler = 0;
 
   bool operator==(const Result& o) const {
     auto same_points = [&] {
@@ -278,8 +279,8 @@ struct Result {
       return true;
     };
     return types == o.types && same_points() && same_critical() && pairs == o.pairs &&
-           persistence == o.persistence && ascending == o.ascending && descending == o.descending &&
-           arcs == o.arcs && arc_ends == o.arc_ends;
+           persistence == o.persistence && euler == o.euler && ascending == o.ascending &&
+           descending == o.descending && arcs == o.arcs && arc_ends == o.arc_ends;
   }
 };
 
@@ -293,6 +294,7 @@ Result compute(const Mesh& mesh, const std::vector<double>& f, std::size_t kv, d
                                                params::critical_points_output(std::back_inserter(r.points)));
   const auto g = PSO::compute_forman_gradient<Tag>(tree, field);
   r.critical = g.critical_simplices();
+  r.euler = g.euler_characteristic();
   PSO::forman_gradient_pairs(tree, g, std::back_inserter(r.pairs));
   std::sort(r.pairs.begin(), r.pairs.end());
   std::vector<PSO::Morse_arc> arcs;
@@ -336,6 +338,8 @@ Result check_against_references(const Mesh& m, const std::vector<double>& f, con
   CHECK_MSG(c[0] - c[1] + c[2] - c[3] == chi, what << ": critical simplices " << c[0] << ", " << c[1] << ", "
                                                    << c[2] << ", " << c[3] << "; Euler characteristic "
                                                    << chi);
+  CHECK_MSG(r.euler == chi,
+            what << ": the gradient counts the Euler characteristic " << r.euler << ", not " << chi);
   check_gradient(m, f, r.pairs, r.critical, what);
   // persistence
   const auto reference = persistence_by_union_find(m, f);

@@ -85,13 +85,10 @@ std::string type_name(PSO::Critical_type t) {
   return PSO::critical_type_name(t);
 }
 
-// The Euler characteristic of the mesh counted leaf by leaf (independently of the lower stars), and
-// the check of the gradient against it.
-long long checked_euler(const Octree& tree, const PSO::Forman_gradient<Octree>& g, Progress_bar& progress) {
-  progress.phase("counting the simplices (Euler characteristic)");
-  const long long chi =
-      PSO::count_simplices(tree, params::progress(progress.callback())).euler_characteristic();
-  progress.finish();
+// The check of the gradient: its critical simplices add up to the Euler characteristic, counted in
+// the same pass apart from the lower stars.
+long long checked_euler(const PSO::Forman_gradient<Octree>& g) {
+  const long long chi = g.euler_characteristic();
   if (chi != g.alternating_sum())
     throw std::logic_error("internal error: the critical simplices of the gradient (alternating sum " +
                            std::to_string(g.alternating_sum()) +
@@ -165,7 +162,7 @@ int run_critical(const Options& o) {
     progress.phase("computing the Forman gradient");
     g = PSO::compute_forman_gradient(tree, values, params::progress(progress.callback()));
     progress.finish();
-    chi = checked_euler(tree, g, progress);
+    chi = checked_euler(g);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -345,7 +342,7 @@ int run_morse(const Options& o) {
           ? PSO::compute_morse_complexes(tree, values, np)
           : PSO::compute_morse_complexes(tree, values, np.arcs_output(std::back_inserter(arcs)));
   progress.finish();
-  const long long chi = checked_euler(tree, m.gradient, progress);
+  const long long chi = checked_euler(m.gradient);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::size_t kept[2] = {0, 0}, total[2] = {0, 0};

@@ -206,6 +206,9 @@ public:
     return static_cast<long long>(counts_[0]) - static_cast<long long>(counts_[1]) +
            static_cast<long long>(counts_[2]) - static_cast<long long>(counts_[3]);
   }
+  /// `V - E + F - T` of the mesh, counted in the same pass as the gradient but apart from it (each
+  /// simplex at its smallest vertex in the octree's numbering, not in the field order)
+  long long euler_characteristic() const { return euler_; }
   /// the bytes of the pairs (4 per tetrahedron), not counting the list of critical simplices
   std::size_t memory_bytes() const { return codes_.capacity(); }
   /// `memory_bytes()` per tetrahedron: 4
@@ -217,6 +220,7 @@ public:
   std::vector<std::uint8_t> codes_;
   std::vector<Critical_simplex> critical_;
   std::array<std::size_t, 4> counts_{{0, 0, 0, 0}};
+  long long euler_ = 0;
   /// \endcond
 };
 
@@ -289,6 +293,7 @@ template <class Index>
 struct Topology_leaf_output {
   std::vector<Critical_record<Index>> critical;
   std::vector<Saddle_event<Index>> joins, splits;
+  long long euler = 0;
 };
 
 // What one pass over the leaves gives, in the octree's numbering.
@@ -303,6 +308,7 @@ struct Topology_pass {
   std::vector<Index> tet_parent;          // the tetrahedron across its paired triangle
   std::vector<Critical_record<Index>> critical;
   std::vector<Saddle_event<Index>> joins, splits;
+  long long euler = 0;
 };
 
 template <class ConcurrencyTag, class Octree, class NP>
@@ -346,6 +352,7 @@ Topology_pass<Octree> run_topology_pass(const Octree& tree, const Field_order<Oc
               if (l.upper_components >= 2) out.splits.push_back({v, l.upper_representatives});
             }
           }
+          if (gradient) out.euler += proc.euler_at_smallest(tree, v, star);
           if (gradient)
             proc.process_lower_star(
                 order, v, star, codes,
@@ -362,6 +369,7 @@ Topology_pass<Octree> run_topology_pass(const Octree& tree, const Field_order<Oc
         pass.critical.insert(pass.critical.end(), out.critical.begin(), out.critical.end());
         for (auto& e : out.joins) pass.joins.push_back(std::move(e));
         for (auto& e : out.splits) pass.splits.push_back(std::move(e));
+        pass.euler += out.euler;
       },
       Progress_reporter<NP>(np));
   return pass;
@@ -563,6 +571,7 @@ compute_forman_gradient(const PR_star_octree_3<GT, I>& tree, const FieldMap& fie
       internal::run_topology_pass<ConcurrencyTag>(tree, order, internal::TOPOLOGY_GRADIENT, false, false, np);
   Forman_gradient<Octree> g;
   g.codes_ = std::move(pass.codes);
+  g.euler_ = pass.euler;
   internal::finish_gradient(tree, order, pass.critical, g);
   return g;
 }
@@ -675,6 +684,7 @@ compute_morse_complexes(const PR_star_octree_3<GT, I>& tree, const FieldMap& fie
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   Morse_complexes<Octree> m;
   m.gradient.codes_ = std::move(pass.codes);
+  m.gradient.euler_ = pass.euler;
   internal::finish_gradient(tree, order, pass.critical, m.gradient);
   m.persistence_threshold =
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::persistence_threshold), 0.0);

@@ -364,6 +364,29 @@ public:
     }
   }
 
+  // V - E + F - T of the simplices whose smallest vertex, in the octree's numbering (not the field
+  // order), is `v`: counted apart from the lower star, so that the Euler characteristic it adds up
+  // to checks the gradient's critical simplices.
+  template <class Star>
+  long long euler_at_smallest(const Octree& tree, Index v, const Star& star) {
+    if (star.size() == 0) return 0;
+    collect_neighbours(tree, v, star);
+    long long chi = 1;
+    for (Index u : nb_) chi -= (u > v);
+    sorted_edges_.clear();
+    for (const auto& e : link_edges_)
+      if (nb_[e.first] > v && nb_[e.second] > v)
+        sorted_edges_.push_back(e.first < e.second ? e : std::make_pair(e.second, e.first));
+    std::sort(sorted_edges_.begin(), sorted_edges_.end());
+    chi += static_cast<long long>(std::unique(sorted_edges_.begin(), sorted_edges_.end()) -
+                                  sorted_edges_.begin());
+    for (auto t : star) {
+      const auto& tv = tree.tetrahedron(t);
+      chi -= (tv[0] >= v && tv[1] >= v && tv[2] >= v && tv[3] >= v);
+    }
+    return chi;
+  }
+
   std::size_t memory_bytes() const {
     return nb_.capacity() * sizeof(Index) + cells_.capacity() * sizeof(Cell) + faces_.capacity() * 12 +
            cofaces_.capacity() * 4 + link_edges_.capacity() * 8;
