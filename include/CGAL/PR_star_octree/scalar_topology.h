@@ -344,7 +344,8 @@ Topology_pass<Octree> run_topology_pass(const Octree& tree, const Field_order<Oc
             const auto& l = proc.analyse_links(order, v, star);
             pass.lower[v] = static_cast<std::uint8_t>((std::min)(l.lower_components, 255u));
             pass.upper[v] = static_cast<std::uint8_t>((std::min)(l.upper_components, 255u));
-            pass.open_link[v] = !l.closed;
+            if (classify_critical_point(l.lower_components, l.upper_components) != Critical_type::REGULAR)
+              pass.open_link[v] = !proc.link_is_closed();
             if (events) {
               pass.descent[v] = l.lower_components == 0 ? v : l.lowest_lower;
               pass.ascent[v] = l.upper_components == 0 ? v : l.highest_upper;

@@ -71,7 +71,6 @@ struct Link_result {
   unsigned lower_components = 0, upper_components = 0;
   std::vector<Index> lower_representatives, upper_representatives;
   Index lowest_lower = Index(-1), highest_upper = Index(-1);
-  bool closed = true; // every link edge in two link triangles (an interior vertex of a manifold)
 };
 
 // The scratch space of the per-vertex work, one per thread.
@@ -102,16 +101,6 @@ public:
     for (const auto& e : link_edges_)
       if (lower_[e.first] == lower_[e.second]) uf_.unite(e.first, e.second);
     link_ = Link_result<Index>();
-    sorted_edges_.clear();
-    for (const auto& e : link_edges_)
-      sorted_edges_.push_back(e.first < e.second ? e : std::make_pair(e.second, e.first));
-    std::sort(sorted_edges_.begin(), sorted_edges_.end());
-    for (std::size_t i = 0; i < sorted_edges_.size() && link_.closed;) {
-      std::size_t j = i;
-      while (j < sorted_edges_.size() && sorted_edges_[j] == sorted_edges_[i]) ++j;
-      link_.closed = (j - i == 2);
-      i = j;
-    }
     // the representative of each component: its extreme vertex in the field order
     rep_.assign(n, none);
     for (std::size_t i = 0; i < n; ++i) {
@@ -134,6 +123,22 @@ public:
       }
     }
     return link_;
+  }
+
+  // Whether the link of the vertex of the last `analyse_links()` is a closed surface: every link
+  // edge in two link triangles (asked for the vertices that are not regular only).
+  bool link_is_closed() {
+    sorted_edges_.clear();
+    for (const auto& e : link_edges_)
+      sorted_edges_.push_back(e.first < e.second ? e : std::make_pair(e.second, e.first));
+    std::sort(sorted_edges_.begin(), sorted_edges_.end());
+    for (std::size_t i = 0; i < sorted_edges_.size();) {
+      std::size_t j = i;
+      while (j < sorted_edges_.size() && sorted_edges_[j] == sorted_edges_[i]) ++j;
+      if (j - i != 2) return false;
+      i = j;
+    }
+    return true;
   }
 
   // ProcessLowerStars on the lower star of `v`.  Calls `critical(dimension, vertices, cofacets)`
@@ -162,6 +167,9 @@ public:
     }
     rank_of_nb_.assign(nb_.size(), -1);
     for (std::size_t r = 0; r < low_.size(); ++r) rank_of_nb_[neighbour_id(low_[r])] = static_cast<int>(r);
+    auto rank_at = [&](std::size_t k, int position) { // of the vertex of star tetrahedron k
+      return rank_of_nb_[static_cast<std::size_t>(star_ids_[k][position])];
+    };
     // the cells: edges (one per lower neighbour, cell id = rank), triangles, tetrahedra
     cells_.clear();
     for (std::size_t r = 0; r < low_.size(); ++r) {
@@ -171,12 +179,13 @@ public:
       cells_.push_back(c);
     }
     triangle_keys_.clear();
+    std::size_t star_k = 0;
     for (auto t : star) {
-      const auto& tv = tree.tetrahedron(t);
       std::array<int, 3> r;
       int k = 0;
       for (int i = 0; i < 4; ++i)
-        if (tv[i] != v) r[k++] = rank_of_nb_[neighbour_id(tv[i])];
+        if (star_ids_[star_k][i] >= 0) r[k++] = rank_at(star_k, i);
+      ++star_k;
       std::sort(r.begin(), r.end(), std::greater<int>());
       for (int a = 0; a < 3; ++a)
         for (int b = a + 1; b < 3; ++b)
@@ -311,8 +320,10 @@ public:
       critical(cell.dimension, vs, cofacets);
     }
     // the corner bytes of v and the parents of the tetrahedra whose highest vertex is v
+    star_k = 0;
     for (auto t : star) {
       const auto& tv = tree.tetrahedron(t);
+      const std::size_t sk = star_k++;
       const int i = position(tv, v);
       std::uint8_t byte = 0;
       // the vertex-edge pair of v: its lowest lower neighbour
@@ -329,7 +340,7 @@ public:
         int a = -1, b = -1; // the two other positions, a < b
         for (int j = 0; j < 4; ++j)
           if (j != i && j != m) (a < 0 ? a : b) = j;
-        const int ra = rank_of_nb_[neighbour_id(tv[a])], rb = rank_of_nb_[neighbour_id(tv[b])];
+        const int ra = rank_at(sk, a), rb = rank_at(sk, b);
         std::uint8_t code = 0;
         if (ra >= 0 && rb >= 0) {
           const std::int32_t f = triangle_id((std::max)(ra, rb), (std::min)(ra, rb), first_triangle);
@@ -441,11 +452,17 @@ private:
     std::sort(nb_.begin(), nb_.end());
     nb_.erase(std::unique(nb_.begin(), nb_.end()), nb_.end());
     link_edges_.clear();
+    star_ids_.clear();
     for (auto t : star) {
       std::array<std::uint32_t, 3> o;
+      std::array<int, 4> ids;
       int k = 0;
-      for (Index u : tree.tetrahedron(t))
-        if (u != v) o[k++] = static_cast<std::uint32_t>(neighbour_id(u));
+      for (int i = 0; i < 4; ++i) {
+        const Index u = tree.tetrahedron(t)[i];
+        ids[i] = u == v ? -1 : static_cast<int>(neighbour_id(u));
+        if (u != v) o[k++] = static_cast<std::uint32_t>(ids[i]);
+      }
+      star_ids_.push_back(ids);
       link_edges_.emplace_back(o[0], o[1]);
       link_edges_.emplace_back(o[0], o[2]);
       link_edges_.emplace_back(o[1], o[2]);
@@ -453,6 +470,8 @@ private:
   }
 
   std::vector<Index> nb_, low_, rep_;
+  std::vector<std::array<int, 4>>
+      star_ids_; // per star tetrahedron: the neighbour id at each position (-1: v)
   Index collected_ = none;
   std::size_t collected_size_ = 0;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> link_edges_, sorted_edges_;
