@@ -15,7 +15,7 @@
 #   and its reverse (elder rule), in --json and --csv; the ascending cells by steepest descent and
 #   the cancellations resolved here; the descending cells around every interior maximum; the arcs
 #   (.vtp read by VTK) against steepest-descent paths, the critical triangles against the mesh;
-# - the same JSON for --kv 1, 8, 50, inf and --threads 1, 2;
+# - the same JSON for --kv 1, 8, 50, inf and --threads 1, 2, 8;
 # - errors: unknown field, NaN in the field, --persistence 2, a missing file (exit codes, messages).
 # Meshes: jittered lattices of `prstar generate` with fields written here (a bowl, three bumps, a
 # linear field, noise, plateaus, two components with a vertex in no tetrahedron), the generated
@@ -693,7 +693,7 @@ def check_invariance(name, mesh_file, field_args, persistence="2%"):
     """7. the same JSON (and cells, arcs) for every k_v and thread count"""
     runs = []
     for opts in (["--kv", "1"], ["--kv", "8"], ["--kv", "50"], ["--kv", "inf"], ["--threads", "1"],
-                 ["--threads", "2", "--kv", "4"]):
+                 ["--threads", "2", "--kv", "4"], ["--threads", "8", "--kv", "2"]):
         jc = prstar_json("critical", mesh_file, *field_args, "--gradient", *opts)
         jm = prstar_json("morse", mesh_file, *field_args, "--persistence", persistence, "-o",
                          path(name + ".inv.vtu"), "--arcs", path(name + ".inv.vtp"), "--force", *opts)
