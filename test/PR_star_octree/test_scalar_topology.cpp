@@ -493,6 +493,33 @@ void test_files(const prstar_test::Data_folders& data) {
   }
 }
 
+// A vertex of high valence (the centre of a double cone over a ring of 300 points: 600
+// tetrahedra and 302 neighbours), with a field that oscillates around the ring: its links have many
+// components (a degenerate saddle of high multiplicity).
+void test_high_valence() {
+  const int n = 300;
+  Mesh m;
+  m.points.emplace_back(0, 0, 0);  // 0: the centre
+  m.points.emplace_back(0, 0, 1);  // 1: the top
+  m.points.emplace_back(0, 0, -1); // 2: the bottom
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < n; ++i) m.points.emplace_back(std::cos(2 * pi * i / n), std::sin(2 * pi * i / n), 0);
+  for (int i = 0; i < n; ++i) {
+    const std::uint32_t a = 3 + static_cast<std::uint32_t>(i),
+                        b = 3 + static_cast<std::uint32_t>((i + 1) % n);
+    m.tetrahedra.push_back({0, a, b, 1});
+    m.tetrahedra.push_back({0, b, a, 2});
+  }
+  std::vector<double> f(m.points.size());
+  f[0] = 0;
+  f[1] = 0.5;
+  f[2] = -0.5;
+  for (int i = 0; i < n; ++i)
+    f[3 + static_cast<std::size_t>(i)] = std::sin(14 * pi * i / n) + 0.001 * (i % 7);
+  const Result r = check_against_references(m, f, "double cone of 300");
+  CHECK(r.types[0] == Critical_type::DEGENERATE || r.types[0] == Critical_type::REGULAR);
+}
+
 // Errors: a NaN field value is refused with the vertex named.
 void test_errors() {
   const Mesh m = prstar_test_meshes::cube_grid(1);
@@ -514,6 +541,7 @@ void test_scalar_topology(const prstar_test::Data_folders& data) {
   test_bowl();
   test_bumps();
   test_linear();
+  test_high_valence();
   test_errors();
   test_files(data);
   std::cout << "scalar topology: "

@@ -85,10 +85,18 @@ public:
   struct Cell {
     std::uint8_t dimension = 0;                   // 1, 2, 3
     std::uint8_t state = 0;                       // 0 unclassified, 1 paired, 2 critical
-    std::array<std::uint16_t, 3> rank{{0, 0, 0}}; // decreasing; unused ones 0
+    std::array<std::uint32_t, 3> rank{{0, 0, 0}}; // decreasing; unused ones 0
     std::int32_t partner = -1;                    // the cell it is paired with (-2: v itself)
     Index tetrahedron = none;                     // a tetrahedron: its index
+    // G as one integer: the ranks plus one, 21 bits each, 0 where absent (a prefix comes first)
+    std::uint64_t g = 0;
+    void set_key() {
+      g = 0;
+      for (int i = 0; i < 3; ++i) g = (g << 21) | (i < dimension ? std::uint64_t(rank[i]) + 1 : 0);
+    }
   };
+  // the ranks of a cell fit in 21 bits
+  static constexpr std::size_t max_lower_neighbours = (std::size_t(1) << 21) - 2;
 
   // The link analysis of `v`, whose star is `star` (tetrahedron indices).
   template <class Star>
@@ -100,7 +108,10 @@ public:
     uf_.reset(n);
     for (const auto& e : link_edges_)
       if (lower_[e.first] == lower_[e.second]) uf_.unite(e.first, e.second);
-    link_ = Link_result<Index>();
+    link_.lower_components = link_.upper_components = 0;
+    link_.lower_representatives.clear();
+    link_.upper_representatives.clear();
+    link_.lowest_lower = link_.highest_upper = none;
     // the representative of each component: its extreme vertex in the field order
     rep_.assign(n, none);
     for (std::size_t i = 0; i < n; ++i) {
@@ -165,6 +176,8 @@ public:
       for (auto t : star) gradient[4 * static_cast<std::size_t>(t) + position(tree.tetrahedron(t), v)] = 0;
       return;
     }
+    if (low_.size() > max_lower_neighbours)
+      throw std::length_error("a vertex with more than 2 million lower neighbours");
     rank_of_nb_.assign(nb_.size(), -1);
     for (std::size_t r = 0; r < low_.size(); ++r) rank_of_nb_[neighbour_id(low_[r])] = static_cast<int>(r);
     auto rank_at = [&](std::size_t k, int position) { // of the vertex of star tetrahedron k
@@ -175,10 +188,11 @@ public:
     for (std::size_t r = 0; r < low_.size(); ++r) {
       Cell c;
       c.dimension = 1;
-      c.rank[0] = static_cast<std::uint16_t>(r);
+      c.rank[0] = static_cast<std::uint32_t>(r);
+      c.set_key();
       cells_.push_back(c);
     }
-    triangle_keys_.clear();
+    triangle_records_.clear();
     std::size_t star_k = 0;
     for (auto t : star) {
       std::array<int, 3> r;
@@ -189,28 +203,42 @@ public:
       std::sort(r.begin(), r.end(), std::greater<int>());
       for (int a = 0; a < 3; ++a)
         for (int b = a + 1; b < 3; ++b)
-          if (r[b] >= 0) triangle_keys_.push_back(key(r[a], r[b]));
+          if (r[b] >= 0) triangle_records_.emplace_back(key(r[a], r[b]), t);
       if (r[2] >= 0) {
         Cell c;
         c.dimension = 3;
-        c.rank = {{static_cast<std::uint16_t>(r[0]), static_cast<std::uint16_t>(r[1]),
-                   static_cast<std::uint16_t>(r[2])}};
+        c.rank = {{static_cast<std::uint32_t>(r[0]), static_cast<std::uint32_t>(r[1]),
+                   static_cast<std::uint32_t>(r[2])}};
         c.tetrahedron = t;
+        c.set_key();
         cells_.push_back(c);
       }
     }
-    std::sort(triangle_keys_.begin(), triangle_keys_.end());
-    triangle_keys_.erase(std::unique(triangle_keys_.begin(), triangle_keys_.end()), triangle_keys_.end());
+    // the triangles (sorted keys) with the tetrahedra of the star around each (two inside, one on
+    // the boundary, more if non-manifold)
+    std::sort(triangle_records_.begin(), triangle_records_.end());
+    triangle_keys_.clear();
+    triangle_tets_.clear();
+    for (std::size_t i = 0; i < triangle_records_.size();) {
+      std::size_t j = i;
+      while (j < triangle_records_.size() && triangle_records_[j].first == triangle_records_[i].first) ++j;
+      triangle_keys_.push_back(triangle_records_[i].first);
+      triangle_tets_.push_back(
+          {{triangle_records_[i].second, j - i > 1 ? triangle_records_[i + 1].second : none,
+            static_cast<Index>(j - i)}});
+      i = j;
+    }
     const std::size_t first_triangle = low_.size();
     // cells_: edges, tetrahedra; the triangles go between them: rebuild in that order
     std::vector<Cell>& tets = tets_;
     tets.assign(cells_.begin() + static_cast<std::ptrdiff_t>(first_triangle), cells_.end());
     cells_.resize(first_triangle);
-    for (std::uint32_t k : triangle_keys_) {
+    for (std::uint64_t k : triangle_keys_) {
       Cell c;
       c.dimension = 2;
-      c.rank[0] = static_cast<std::uint16_t>(k >> 16);
-      c.rank[1] = static_cast<std::uint16_t>(k & 0xffffu);
+      c.rank[0] = static_cast<std::uint32_t>(k >> 32);
+      c.rank[1] = static_cast<std::uint32_t>(k & 0xffffffffu);
+      c.set_key();
       cells_.push_back(c);
     }
     const std::size_t first_tet = cells_.size();
@@ -222,7 +250,7 @@ public:
     for (std::size_t c = first_triangle; c < n; ++c) {
       const Cell& cell = cells_[c];
       if (cell.dimension == 2) {
-        faces_[c] = {{cell.rank[0], cell.rank[1], -1}};
+        faces_[c] = {{static_cast<int>(cell.rank[0]), static_cast<int>(cell.rank[1]), -1}};
       } else {
         faces_[c] = {{triangle_id(cell.rank[0], cell.rank[1], first_triangle),
                       triangle_id(cell.rank[0], cell.rank[2], first_triangle),
@@ -301,13 +329,9 @@ public:
       for (int i = 0; i < cell.dimension; ++i) vs[i + 1] = low_[cell.rank[i]];
       std::array<Index, 2> cofacets{{none, none}};
       if (cell.dimension == 2) {
-        int k = 0;
-        for (auto t : star) {
-          if (!contains(tree.tetrahedron(t), vs[1]) || !contains(tree.tetrahedron(t), vs[2])) continue;
-          if (k < 2) cofacets[k] = t;
-          ++k;
-        }
-        if (k > 2) cofacets = {{none, none}}; // a non-manifold triangle
+        const auto& around = triangle_tets_[c - first_triangle];
+        const std::size_t k = static_cast<std::size_t>(around[2]);
+        if (k <= 2) cofacets = {{around[0], around[1]}}; // none for a non-manifold triangle
         if (k == 2) { // in the field order of their fourth vertices: the same for any numbering
           auto fourth = [&](Index t) {
             for (Index u : tree.tetrahedron(t))
@@ -346,7 +370,7 @@ public:
           const std::int32_t f = triangle_id((std::max)(ra, rb), (std::min)(ra, rb), first_triangle);
           const std::int32_t p = cells_[f].partner;
           if (p >= 0 && cells_[p].dimension == 1)
-            code = cells_[p].rank[0] == ra ? 1 : 2;
+            code = static_cast<int>(cells_[p].rank[0]) == ra ? 1 : 2;
           else if (p >= 0 && cells_[p].dimension == 3 && cells_[p].tetrahedron == t)
             code = 3;
         }
@@ -362,16 +386,10 @@ public:
         parent(t, t);
         continue;
       }
-      const Cell& f = cells_[cell.partner]; // a triangle
-      const Index a = low_[f.rank[0]], b = low_[f.rank[1]];
-      Index across = none;
-      int k = 0;
-      for (auto u : star) {
-        if (u == t) continue;
-        const auto& uv = tree.tetrahedron(u);
-        if (contains(uv, a) && contains(uv, b)) across = u, ++k;
-      }
-      parent(t, k == 1 ? across : none);
+      // the tetrahedron across the triangle it is paired with: none on the boundary or when the
+      // triangle is non-manifold
+      const auto& around = triangle_tets_[static_cast<std::size_t>(cell.partner) - first_triangle];
+      parent(t, around[2] == 2 ? (around[0] == t ? around[1] : around[0]) : none);
     }
   }
 
@@ -404,8 +422,8 @@ public:
   }
 
 private:
-  static std::uint32_t key(int hi, int lo) {
-    return (static_cast<std::uint32_t>(hi) << 16) | static_cast<std::uint32_t>(lo);
+  static std::uint64_t key(int hi, int lo) {
+    return (static_cast<std::uint64_t>(hi) << 32) | static_cast<std::uint64_t>(lo);
   }
   template <class T>
   static int position(const T& tv, Index v) {
@@ -413,13 +431,30 @@ private:
       if (tv[i] == v) return i;
     return 0;
   }
-  template <class T>
-  static bool contains(const T& tv, Index v) {
-    return tv[0] == v || tv[1] == v || tv[2] == v || tv[3] == v;
+  std::size_t slot_of(Index u) const {
+    return static_cast<std::size_t>((static_cast<std::uint64_t>(u) * 0x9E3779B97F4A7C15ull) >>
+                                    (64 - slot_bits_));
   }
   std::size_t neighbour_id(Index u) const {
-    return static_cast<std::size_t>(std::lower_bound(nb_.begin(), nb_.end(), u) - nb_.begin());
+    const std::size_t mask = slot_key_.size() - 1;
+    std::size_t k = slot_of(u);
+    while (slot_key_[k] != u) k = (k + 1) & mask;
+    return slot_id_[k];
   }
+  int insert_neighbour(Index u) {
+    const std::size_t mask = slot_key_.size() - 1;
+    std::size_t k = slot_of(u);
+    for (;; k = (k + 1) & mask) {
+      if (slot_key_[k] == u) return static_cast<int>(slot_id_[k]);
+      if (slot_key_[k] == none) break;
+    }
+    slot_key_[k] = u;
+    slot_id_[k] = static_cast<std::uint32_t>(nb_.size());
+    used_slots_.push_back(static_cast<std::uint32_t>(k));
+    nb_.push_back(u);
+    return static_cast<int>(slot_id_[k]);
+  }
+
   std::int32_t triangle_id(int hi, int lo, std::size_t first_triangle) const {
     const auto it = std::lower_bound(triangle_keys_.begin(), triangle_keys_.end(), key(hi, lo));
     return static_cast<std::int32_t>(first_triangle + static_cast<std::size_t>(it - triangle_keys_.begin()));
@@ -430,14 +465,8 @@ private:
     return k;
   }
   // G(a) < G(b): the decreasing rank sequences compared lexicographically, a prefix first
-  bool less_g(std::int32_t a, std::int32_t b) const {
-    const Cell &x = cells_[a], &y = cells_[b];
-    const int n = (std::min)(x.dimension, y.dimension);
-    for (int i = 0; i < n; ++i)
-      if (x.rank[i] != y.rank[i]) return x.rank[i] < y.rank[i];
-    return x.dimension < y.dimension;
-  }
-  // the neighbours of v (sorted) and the link edges (pairs of neighbour ids, one per link triangle
+  bool less_g(std::int32_t a, std::int32_t b) const { return cells_[a].g < cells_[b].g; }
+  // the neighbours of v (in the order met) and the link edges (pairs of neighbour ids, one per link triangle
   // side, duplicates kept)
   template <class Star>
   void collect_neighbours(const Octree& tree, Index v, const Star& star) {
@@ -445,12 +474,18 @@ private:
       return; // the links and the lower star of one vertex
     collected_ = v;
     collected_size_ = star.size();
+    // the table at most a quarter full
+    int bits = 4;
+    while ((std::size_t(1) << bits) < 4 * 3 * static_cast<std::size_t>(star.size())) ++bits;
+    if (bits > slot_bits_) {
+      slot_bits_ = bits;
+      slot_key_.assign(std::size_t(1) << bits, none);
+      slot_id_.assign(std::size_t(1) << bits, 0);
+    } else {
+      for (std::uint32_t k : used_slots_) slot_key_[k] = none;
+    }
+    used_slots_.clear();
     nb_.clear();
-    for (auto t : star)
-      for (Index u : tree.tetrahedron(t))
-        if (u != v) nb_.push_back(u);
-    std::sort(nb_.begin(), nb_.end());
-    nb_.erase(std::unique(nb_.begin(), nb_.end()), nb_.end());
     link_edges_.clear();
     star_ids_.clear();
     for (auto t : star) {
@@ -459,7 +494,7 @@ private:
       int k = 0;
       for (int i = 0; i < 4; ++i) {
         const Index u = tree.tetrahedron(t)[i];
-        ids[i] = u == v ? -1 : static_cast<int>(neighbour_id(u));
+        ids[i] = u == v ? -1 : insert_neighbour(u);
         if (u != v) o[k++] = static_cast<std::uint32_t>(ids[i]);
       }
       star_ids_.push_back(ids);
@@ -480,7 +515,13 @@ private:
   Union_find uf_; // local_complex.h
   Link_result<Index> link_;
   std::vector<Cell> cells_, tets_;
-  std::vector<std::uint32_t> triangle_keys_;
+  std::vector<std::uint64_t> triangle_keys_;
+  std::vector<std::pair<std::uint64_t, Index>> triangle_records_;
+  std::vector<std::array<Index, 3>> triangle_tets_; // two tetrahedra of the star and their number
+  // the neighbours' ids: an open-addressing table (vertex -> id in nb_), grown, never shrunk
+  std::vector<Index> slot_key_;
+  std::vector<std::uint32_t> slot_id_, used_slots_;
+  int slot_bits_ = 0;
   std::vector<std::array<int, 3>> faces_;
   std::vector<std::size_t> coface_offsets_, fill_;
   std::vector<std::int32_t> cofaces_;
