@@ -497,7 +497,7 @@ void elder_rule(const Field_order<Octree>& order, std::vector<Saddle_event<typen
 /// \tparam FieldMap as in `compute_curvature()`: a `ReadablePropertyMap` keyed by the user's vertex
 ///         index, value convertible to `double`
 /// \tparam TypeMap a `WritablePropertyMap` keyed by the user's vertex index with value
-///         `Critical_type`, or `CGAL::Emptyset_iterator`-like `std::nullptr_t` (no map)
+///         `Critical_type`, or `nullptr` (no map)
 /// \param tree the octree of the mesh
 /// \param field the scalar field (finite at every vertex)
 /// \param type_map receives the type of each vertex
@@ -524,7 +524,6 @@ template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, clas
           class TypeMap, class NP = parameters::Default_named_parameters>
 Critical_point_counts compute_critical_points(const PR_star_octree_3<GT, I>& tree, const FieldMap& field,
                                               TypeMap type_map, const NP& np = parameters::default_values()) {
-  using Octree = PR_star_octree_3<GT, I>;
   const auto order = internal::make_field_order(tree, field);
   const auto pass =
       internal::run_topology_pass<ConcurrencyTag>(tree, order, internal::TOPOLOGY_LINKS, false, false, np);
@@ -545,7 +544,6 @@ Critical_point_counts compute_critical_points(const PR_star_octree_3<GT, I>& tre
     std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.vertex < b.vertex; });
     for (const auto& p : points) *out++ = p;
   }
-  (void)sizeof(Octree);
   return counts;
 }
 
