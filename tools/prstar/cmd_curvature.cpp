@@ -14,10 +14,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -97,9 +94,7 @@ void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const st
 
 void write_curvature_csv(const std::string& csv, std::size_t n,
                          const std::function<Curvature_row(std::size_t)>& row) {
-  write_through_temporary(csv, [&](const std::string& tmp) {
-    std::ofstream f(tmp);
-    if (!f) throw std::runtime_error(csv + ": cannot open the file for writing: " + std::strerror(errno));
+  write_text_file(csv, [&](std::ostream& f) {
     f << "vertex,x,y,z,boundary,distortion,domain_curvature\n";
     std::string line;
     for (std::size_t v = 0; v < n; ++v) {
@@ -110,8 +105,6 @@ void write_curvature_csv(const std::string& csv, std::size_t n,
              (defined ? number(r.domain) : "nan") + '\n';
       f << line;
     }
-    f.flush();
-    if (!f) throw std::runtime_error(csv + ": cannot write the output file: " + std::strerror(errno));
   });
 }
 

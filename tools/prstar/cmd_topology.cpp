@@ -15,11 +15,8 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <iostream>
 #include <iterator>
 
@@ -37,6 +34,7 @@ const std::size_t no_vertex = PSO::Critical_simplex::no_vertex;
 struct Field {
   std::string name;
   std::vector<double> values;
+  std::vector<char> referenced; // the vertices in a tetrahedron
   double min = 0, max = 0;
 };
 
@@ -51,13 +49,13 @@ Field take_field(Mesh& mesh, const std::string& requested, const std::string& in
     const std::size_t i = find_point_field(mesh.point_data, f.name, input);
     f.values = mesh.point_data[i].values;
   }
-  std::vector<char> referenced(mesh.points.size(), 0);
+  f.referenced.assign(mesh.points.size(), 0);
   for (const auto& t : mesh.tetrahedra)
     for (auto v : t)
-      if (v < referenced.size()) referenced[v] = 1;
+      if (v < f.referenced.size()) f.referenced[v] = 1;
   bool first = true;
   for (std::size_t v = 0; v < f.values.size(); ++v) {
-    if (!referenced[v]) continue;
+    if (!f.referenced[v]) continue;
     f.min = first ? f.values[v] : std::min(f.min, f.values[v]);
     f.max = first ? f.values[v] : std::max(f.max, f.values[v]);
     first = false;
@@ -121,16 +119,6 @@ void table_gradient(Table& t, const PSO::Forman_gradient<Octree>& g, long long c
   t.add({"  bytes per tetrahedron", number(g.bytes_per_tetrahedron())});
 }
 
-void write_text(const std::string& path, const std::function<void(std::ostream&)>& body) {
-  write_through_temporary(path, [&](const std::string& tmp) {
-    std::ofstream f(tmp);
-    if (!f) throw std::runtime_error(path + ": cannot open the file for writing: " + std::strerror(errno));
-    body(f);
-    f.flush();
-    if (!f) throw std::runtime_error(path + ": cannot write the output file: " + std::strerror(errno));
-  });
-}
-
 // ----------------------------------------------------------------------------------------------
 // prstar critical
 
@@ -141,9 +129,6 @@ int run_critical(const Options& o) {
   Progress_bar progress(o.show_progress());
   Mesh mesh = read_mesh(input, progress);
   Field field = take_field(mesh, o.get("--field"), input);
-  std::vector<char> referenced(mesh.points.size(), 0);
-  for (const auto& t : mesh.tetrahedra)
-    for (auto v : t) referenced[v] = 1;
   const auto start = std::chrono::steady_clock::now();
   Mesh_arrays arrays;
   const Octree tree = build_octree(o, std::move(mesh), arrays, !out.empty(), progress);
@@ -170,7 +155,7 @@ int run_critical(const Options& o) {
   auto coordinates = [&](std::size_t v) { return tree.coordinates(tree.point(from_original[v])); };
   if (!csv.empty()) {
     progress.phase("writing " + csv);
-    write_text(csv, [&](std::ostream& f) {
+    write_text_file(csv, [&](std::ostream& f) {
       f << "vertex,x,y,z,value,type,type_name,lower_components,upper_components,boundary\n";
       for (const auto& p : points) {
         const auto c = coordinates(p.vertex);
@@ -189,7 +174,7 @@ int run_critical(const Options& o) {
     result[2] = {"upper_components", std::vector<double>(nv)};
     for (std::size_t v = 0; v < nv; ++v) {
       result[0].values[v] = static_cast<double>(types[v]);
-      result[1].values[v] = result[2].values[v] = referenced[v] ? 1 : 0;
+      result[1].values[v] = result[2].values[v] = field.referenced[v] ? 1 : 0;
     }
     for (const auto& p : points) {
       result[1].values[p.vertex] = p.lower_components;
@@ -276,7 +261,7 @@ int run_critical(const Options& o) {
 // indices, -1 when the path leaves the domain), saddle_value.
 void write_arcs_vtp(const std::string& path, const std::vector<PSO::Morse_arc>& arcs,
                     const std::vector<PSO::Critical_simplex>& critical) {
-  write_text(path, [&](std::ostream& f) {
+  write_text_file(path, [&](std::ostream& f) {
     std::size_t n = 0;
     for (const auto& a : arcs) n += a.points.size();
     f << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
@@ -352,7 +337,7 @@ int run_morse(const Options& o) {
   }
   if (!csv.empty()) {
     progress.phase("writing " + csv);
-    write_text(csv, [&](std::ostream& f) {
+    write_text_file(csv, [&](std::ostream& f) {
       f << "type,extremum,saddle,extremum_value,saddle_value,birth,death,persistence\n";
       for (const auto& p : m.persistence_pairs) {
         auto n = [](double x) { return std::isfinite(x) ? number(x) : std::string(x > 0 ? "inf" : "-inf"); };

@@ -411,6 +411,16 @@ std::string Options::output(const std::string& option) const {
   return "";
 }
 
+void write_text_file(const std::string& out, const std::function<void(std::ostream&)>& body) {
+  write_through_temporary(out, [&](const std::string& tmp) {
+    std::ofstream f(tmp);
+    if (!f) throw std::runtime_error(out + ": cannot open the file for writing: " + std::strerror(errno));
+    body(f);
+    f.flush();
+    if (!f) throw std::runtime_error(out + ": cannot write the output file: " + std::strerror(errno));
+  });
+}
+
 std::size_t find_point_field(const std::vector<CGAL::PR_star_octree::Point_data_array>& pd, std::string& name,
                              const std::string& input) {
   const auto it = name.empty()

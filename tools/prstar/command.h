@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -198,6 +199,9 @@ Mesh read_mesh(const std::string& file, Progress_bar& progress);
 /// format): OUT.mesh -> OUT.prstar-tmp-PID.mesh.  A TetGen name OUT.node or OUT.ele stands for
 /// both files, written and renamed together (and both checked by `Command::parse()`).
 void write_through_temporary(const std::string& out, const std::function<void(const std::string&)>& write);
+/// `write_through_temporary` of a text file: `body` writes to the stream; errors name `out` with the
+/// OS reason.
+void write_text_file(const std::string& out, const std::function<void(std::ostream&)>& body);
 /// `write_through_temporary` with the library's writer chosen by the extension of `out`.
 void write_mesh_file(const std::string& out, const Mesh& mesh);
 /// The output extensions that keep every point array (from the library's format table): VTK XML and

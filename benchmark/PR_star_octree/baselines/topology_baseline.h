@@ -84,18 +84,6 @@ struct Vertex_order {
   }
 };
 
-/// The critical type of a vertex from the numbers of components of its lower and upper links
-/// (the convention of TTK and of the package: the link as it is, a disc on the boundary).
-inline Critical_type classify(unsigned lower, unsigned upper) {
-  if (lower == 0 && upper == 0) return Critical_type::REGULAR;
-  if (lower == 0) return Critical_type::MINIMUM;
-  if (upper == 0) return Critical_type::MAXIMUM;
-  if (lower == 1 && upper == 1) return Critical_type::REGULAR;
-  if (lower == 2 && upper == 1) return Critical_type::SADDLE_1;
-  if (lower == 1 && upper == 2) return Critical_type::SADDLE_2;
-  return Critical_type::DEGENERATE;
-}
-
 /// A critical simplex: its dimension and vertices (the IA's numbering, the highest first).
 template <class Index>
 struct Critical_cell {
@@ -499,7 +487,7 @@ Critical_point_counts critical_points(const Extended_IA<Index>& ia, const Vertex
         w.extract_star(ia, v);
         const auto lu = w.link_components(ia, order);
         counts.add(lu.first, lu.second);
-        types[v] = classify(lu.first, lu.second);
+        types[v] = CGAL::PR_star_octree::classify_critical_point(lu.first, lu.second); // the convention
       });
   Critical_point_counts total;
   for (const auto& c : parts) {

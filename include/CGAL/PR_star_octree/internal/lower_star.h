@@ -55,7 +55,6 @@ public:
     const double fa = values_[a], fb = values_[b];
     return fa < fb || (fa == fb && key(a) < key(b));
   }
-  std::size_t memory_bytes() const { return values_.capacity() * sizeof(double); }
 
 private:
   const Octree* tree_ = nullptr;
@@ -414,11 +413,6 @@ public:
       chi -= (tv[0] >= v && tv[1] >= v && tv[2] >= v && tv[3] >= v);
     }
     return chi;
-  }
-
-  std::size_t memory_bytes() const {
-    return nb_.capacity() * sizeof(Index) + cells_.capacity() * sizeof(Cell) + faces_.capacity() * 12 +
-           cofaces_.capacity() * 4 + link_edges_.capacity() * 8;
   }
 
 private:
