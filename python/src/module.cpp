@@ -26,10 +26,14 @@ namespace {
 // 0 interior, 1 boundary, 2 non-manifold, 3 in no tetrahedron: the codes of `prstar boundary`
 std::uint8_t vertex_code(PSO::Vertex_type t) {
   switch (t) {
-  case PSO::Vertex_type::INTERIOR: return 0;
-  case PSO::Vertex_type::BOUNDARY: return 1;
-  case PSO::Vertex_type::NONMANIFOLD: return 2;
-  default: return 3;
+  case PSO::Vertex_type::INTERIOR:
+    return 0;
+  case PSO::Vertex_type::BOUNDARY:
+    return 1;
+  case PSO::Vertex_type::NONMANIFOLD:
+    return 2;
+  default:
+    return 3;
   }
 }
 
@@ -220,7 +224,8 @@ py::dict curvature(Py_octree& o, py::handle field, py::object progress) {
   const Progress p(std::move(progress));
   {
     Compute_scope scope(o.threads);
-    counts = PSO::compute_curvature(tree, values.data(), Curvature_arrays::Map{&a}, params::progress(std::cref(p)));
+    counts = PSO::compute_curvature(tree, values.data(), Curvature_arrays::Map{&a},
+                                    params::progress(std::cref(p)));
   }
   // undefined (non-manifold, unreferenced): NaN, as the CLI's CSV
   for (std::size_t v = 0; v < a.code.size(); ++v)
@@ -241,7 +246,8 @@ py::dict curvature(Py_octree& o, py::handle field, py::object progress) {
 } // namespace
 
 void bind_octree(py::module_& m) {
-  py::class_<Py_octree>(m, "Octree", R"(The PR-star octree of a tetrahedral mesh (the C++ class PR_star_octree_3).
+  py::class_<Py_octree>(m, "Octree",
+                        R"(The PR-star octree of a tetrahedral mesh (the C++ class PR_star_octree_3).
 
 Built from numpy arrays, which are read in place and copied once into the octree:
 points (n, 3) float32 or float64, tetrahedra (m, 4) of any integer dtype, labels (m,) integer,
@@ -250,7 +256,8 @@ Results of the applications come in the user's vertex and tetrahedron order.)")
       .def(py::init(&make_octree), py::arg("points"), py::arg("tetrahedra"), py::kw_only(),
            py::arg("bucket_size") = 50, py::arg("max_depth") = py::none(), py::arg("labels") = py::none(),
            py::arg("field") = py::none(), py::arg("threads") = py::none())
-      .def_property_readonly("number_of_vertices", [](const Py_octree& o) { return o.get().number_of_vertices(); })
+      .def_property_readonly("number_of_vertices",
+                             [](const Py_octree& o) { return o.get().number_of_vertices(); })
       .def_property_readonly("number_of_tetrahedra",
                              [](const Py_octree& o) { return o.get().number_of_tetrahedra(); })
       .def_property_readonly("bucket_size",
@@ -260,13 +267,16 @@ Results of the applications come in the user's vertex and tetrahedron order.)")
                                return py::int_(o.get().bucket_size());
                              })
       .def_property_readonly("depth", [](const Py_octree& o) { return o.get().depth(); })
-      .def_property_readonly("number_of_leaves", [](const Py_octree& o) { return o.get().number_of_leaves(); })
-      .def_property_readonly("has_labels", [](const Py_octree& o) { return o.get().has_tetrahedron_labels(); })
+      .def_property_readonly("number_of_leaves",
+                             [](const Py_octree& o) { return o.get().number_of_leaves(); })
+      .def_property_readonly("has_labels",
+                             [](const Py_octree& o) { return o.get().has_tetrahedron_labels(); })
       .def_property_readonly("has_field", [](const Py_octree& o) { return o.get().has_scalar_field(); })
-      .def_property_readonly("threads", [](const Py_octree& o) -> py::object {
-        if (o.threads == 0) return py::none();
-        return py::int_(o.threads);
-      })
+      .def_property_readonly("threads",
+                             [](const Py_octree& o) -> py::object {
+                               if (o.threads == 0) return py::none();
+                               return py::int_(o.threads);
+                             })
       .def("statistics", [](const Py_octree& o) { return statistics_dict(o.get().statistics()); })
       .def("leaves", [](const Py_octree& o) { return leaves_dict(o.get()); })
       .def("vertex_order",

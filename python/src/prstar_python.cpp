@@ -44,7 +44,8 @@ Array_view<T>::Array_view(py::handle obj, const char* what, py::ssize_t columns,
     throw py::value_error(std::string(what) + ": boolean array, expected " + kinds_text(kinds));
   code_ = kinds.find(dt.kind()) != std::string::npos ? normalised_code(dt) : 0;
   if (code_ == 0)
-    throw py::value_error(std::string(what) + ": dtype " + py::cast<std::string>(py::str(static_cast<const py::handle&>(dt))) + ", expected " +
+    throw py::value_error(std::string(what) + ": dtype " +
+                          py::cast<std::string>(py::str(static_cast<const py::handle&>(dt))) + ", expected " +
                           kinds_text(kinds));
   const py::ssize_t dims = columns == 0 ? 1 : 2;
   auto shape_text = [&] {
@@ -71,8 +72,8 @@ Numpy_input::Numpy_input(py::handle points, py::handle tetrahedra, py::handle la
   if (!labels.is_none()) {
     labels_ = Array_view<int>(labels, "labels", 0, "iu");
     if (labels_.size() != nt)
-      throw py::value_error("labels: " + std::to_string(labels_.size()) + " values for " + std::to_string(nt) +
-                            " tetrahedra");
+      throw py::value_error("labels: " + std::to_string(labels_.size()) + " values for " +
+                            std::to_string(nt) + " tetrahedra");
     // labels are C ints: a value out of that range is refused, not wrapped
     const char c = labels_.code();
     if (c == 'l' || c == 'L' || c == 'I') {
@@ -80,8 +81,8 @@ Numpy_input::Numpy_input(py::handle points, py::handle tetrahedra, py::handle la
       for (std::size_t t = 0; t < nt; ++t) {
         const long long l = wide.get(t);
         if (l < std::numeric_limits<int>::min() || l > std::numeric_limits<int>::max() ||
-            (c == 'L' && static_cast<unsigned long long>(l) > static_cast<unsigned long long>(
-                                                                   std::numeric_limits<int>::max())))
+            (c == 'L' && static_cast<unsigned long long>(l) >
+                             static_cast<unsigned long long>(std::numeric_limits<int>::max())))
           throw py::value_error("labels: the label of tetrahedron " + std::to_string(t) +
                                 " does not fit a 32-bit integer");
       }
@@ -113,7 +114,9 @@ Numpy_input::Numpy_input(py::handle points, py::handle tetrahedra, py::handle la
   }
 }
 
-long long Numpy_input::tet(std::size_t t, std::size_t k) const { return tetrahedra_.get(t, k); }
+long long Numpy_input::tet(std::size_t t, std::size_t k) const {
+  return tetrahedra_.get(t, k);
+}
 
 py::array_t<double> points_to_numpy(std::vector<Point_3>&& points) {
   static_assert(sizeof(Point_3) == 3 * sizeof(double), "Point_3 is three doubles");
@@ -175,7 +178,7 @@ std::size_t bucket_size_argument(py::handle kv) {
 }
 
 std::size_t max_depth_argument(py::handle depth) {
-  if (depth.is_none()) return 0;
+  if (depth.is_none()) return Octree::default_max_depth;
   if (!py::isinstance<py::int_>(depth) || py::isinstance<py::bool_>(depth))
     throw py::type_error("max_depth: expected None or a positive int");
   const long long n = depth.cast<long long>();
@@ -191,8 +194,9 @@ std::vector<double> field_argument(Py_octree& o, py::handle field, const char* f
   int axis = -1;
   if (field.is_none()) {
     if (!tree.has_scalar_field())
-      throw py::value_error(fn + ": no field: give field= (an array of one value per vertex, or 'x', 'y', 'z'), "
-                                 "or build the Octree with field=");
+      throw py::value_error(fn +
+                            ": no field: give field= (an array of one value per vertex, or 'x', 'y', 'z'), "
+                            "or build the Octree with field=");
     const auto& from = o.from_original();
     for (std::size_t v = 0; v < nv; ++v) values[v] = tree.scalar(from[v]);
     return values;
@@ -202,17 +206,18 @@ std::vector<double> field_argument(Py_octree& o, py::handle field, const char* f
     if (s == "x" || s == "y" || s == "z")
       axis = s[0] - 'x';
     else
-      throw py::value_error(fn + ": field '" + s +
-                            "': a name is looked up in a Mesh's point_data; with an Octree give 'x', 'y', 'z' "
-                            "or an array");
+      throw py::value_error(
+          fn + ": field '" + s +
+          "': a name is looked up in a Mesh's point_data; with an Octree give 'x', 'y', 'z' "
+          "or an array");
     const auto& from = o.from_original();
     for (std::size_t v = 0; v < nv; ++v) values[v] = tree.coordinates(tree.point(from[v]))[axis];
     return values;
   }
   Array_view<double> a(field, "field", 0, "fiu");
   if (a.size() != nv)
-    throw py::value_error(fn + ": field has " + std::to_string(a.size()) + " values for " + std::to_string(nv) +
-                          " vertices");
+    throw py::value_error(fn + ": field has " + std::to_string(a.size()) + " values for " +
+                          std::to_string(nv) + " vertices");
   for (std::size_t v = 0; v < nv; ++v) {
     values[v] = a.get(v);
     if (!std::isfinite(values[v]))

@@ -70,16 +70,26 @@ public:
   T get(std::size_t i, std::size_t j = 0) const {
     const char* p = data_ + static_cast<py::ssize_t>(i) * s0_ + static_cast<py::ssize_t>(j) * s1_;
     switch (code_) {
-    case 'f': return static_cast<T>(load<float>(p));
-    case 'd': return static_cast<T>(load<double>(p));
-    case 'b': return static_cast<T>(load<std::int8_t>(p));
-    case 'h': return static_cast<T>(load<std::int16_t>(p));
-    case 'i': return static_cast<T>(load<std::int32_t>(p));
-    case 'l': return static_cast<T>(load<std::int64_t>(p));
-    case 'B': return static_cast<T>(load<std::uint8_t>(p));
-    case 'H': return static_cast<T>(load<std::uint16_t>(p));
-    case 'I': return static_cast<T>(load<std::uint32_t>(p));
-    case 'L': return static_cast<T>(load<std::uint64_t>(p));
+    case 'f':
+      return static_cast<T>(load<float>(p));
+    case 'd':
+      return static_cast<T>(load<double>(p));
+    case 'b':
+      return static_cast<T>(load<std::int8_t>(p));
+    case 'h':
+      return static_cast<T>(load<std::int16_t>(p));
+    case 'i':
+      return static_cast<T>(load<std::int32_t>(p));
+    case 'l':
+      return static_cast<T>(load<std::int64_t>(p));
+    case 'B':
+      return static_cast<T>(load<std::uint8_t>(p));
+    case 'H':
+      return static_cast<T>(load<std::uint16_t>(p));
+    case 'I':
+      return static_cast<T>(load<std::uint32_t>(p));
+    case 'L':
+      return static_cast<T>(load<std::uint64_t>(p));
     }
     return T();
   }
@@ -111,7 +121,9 @@ public:
 
   std::size_t number_of_vertices() const { return points_.size(); }
   std::size_t number_of_tetrahedra() const { return tetrahedra_.size(); }
-  Point_3 point(std::size_t i) const { return Point_3(points_.get(i, 0), points_.get(i, 1), points_.get(i, 2)); }
+  Point_3 point(std::size_t i) const {
+    return Point_3(points_.get(i, 0), points_.get(i, 1), points_.get(i, 2));
+  }
   std::array<long long, 4> tetrahedron(std::size_t t) const {
     return {{tet(t, 0), tet(t, 1), tet(t, 2), tet(t, 3)}};
   }
@@ -218,13 +230,15 @@ struct Py_octree {
 
 /// The parameters shared by every octree construction.
 inline auto octree_parameters(std::size_t bucket_size, std::size_t max_depth) {
-  return params::bucket_size(bucket_size).maximum_depth(max_depth).vertex_permutation(true).tetrahedron_permutation(
-      true);
+  return params::bucket_size(bucket_size)
+      .maximum_depth(max_depth)
+      .vertex_permutation(true)
+      .tetrahedron_permutation(true);
 }
 
 /// `bucket_size` as Python gives it: a positive int, or `None`/`math.inf` for a single leaf.
 std::size_t bucket_size_argument(py::handle kv);
-/// `max_depth`: `None` (the library's bound) or a positive int.
+/// `max_depth`: `None` (the library's default, 32) or an int in [1, 64].
 std::size_t max_depth_argument(py::handle depth);
 
 /// A field for the applications: `None` (the octree's own field), "x"/"y"/"z", or a (n,) array in the
