@@ -6,6 +6,8 @@
 #   scripts/install_dependencies.sh --build-only  what building needs (the library's users, prstar,
 #                                                 the tests, examples and benchmarks): what
 #                                                 scripts/setup.sh installs
+#   scripts/install_dependencies.sh --python      what building needs, plus the Python module's
+#                                                 (pybind11, the Python headers, numpy)
 set -euo pipefail
 # Building: the compiler, CMake, CGAL and its dependencies, Eigen (distortion), TBB (parallel
 # leaves), TetGen (prstar generate --tetgen), zlib, lz4, lzma (compressed VTU).
@@ -16,12 +18,16 @@ build=(g++ make cmake libcgal-dev libboost-dev libeigen3-dev libtbb-dev libgmp-d
 # format interoperability tests; xvfb to render the pictures (scripts/make_pictures.sh) off screen;
 # Open MPI for the distributed octree (optional: without it the MPI tool commands, tests and
 # example are not built); HDF5 for the XDMF heavy data (optional: without it only inline-XML .xdmf
-# files are read and written) and h5py for meshio's XDMF files (interop_xdmf.py).
-test_only=(doxygen python3-vtk9 python3-meshio gmsh xvfb libopenmpi-dev openmpi-bin libhdf5-dev python3-h5py)
+# files are read and written) and h5py for meshio's XDMF files (interop_xdmf.py); pybind11, the
+# Python headers, numpy and pytest for the Python module and its tests (optional: without them the
+# module is not built; scripts/install_python.sh installs the module alone).
+test_only=(doxygen python3-vtk9 python3-meshio gmsh xvfb libopenmpi-dev openmpi-bin libhdf5-dev python3-h5py
+           pybind11-dev python3-dev python3-numpy python3-pytest)
 case "${1:-}" in
   --build-only) packages=("${build[@]}") ;;
+  --python) packages=("${build[@]}" pybind11-dev python3-dev python3-numpy) ;;
   "") packages=("${build[@]}" "${test_only[@]}") ;;
-  *) echo "install_dependencies.sh: unknown option $1 (--build-only, or nothing for everything)" >&2; exit 2 ;;
+  *) echo "install_dependencies.sh: unknown option $1 (--build-only, --python, or nothing for everything)" >&2; exit 2 ;;
 esac
 missing=()
 for p in "${packages[@]}"; do
