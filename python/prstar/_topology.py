@@ -234,28 +234,38 @@ class MorseResult:
         return out
 
 
-def _persistence_argument(persistence: Any) -> Dict[str, Any]:
-    """``persistence`` as (absolute threshold, fraction of the range or None)."""
+def _persistence_argument(persistence: Any, threshold: Any) -> Dict[str, Any]:
+    """``persistence`` (a fraction of the range, as the CLI's --persistence: 0.05 or "5%") or
+    ``threshold`` (absolute), as {"threshold": absolute or 0, "relative": fraction or None}."""
+    if threshold is not None:
+        if not (persistence == 0 or persistence == "0" or persistence == "0%"):
+            raise ValueError("morse_complexes: give persistence (a fraction of the field's range) or "
+                             "threshold (an absolute value), not both")
+        if isinstance(threshold, bool) or not isinstance(threshold, numbers.Real):
+            raise TypeError("morse_complexes: threshold: expected a number (in the field's units)")
+        t = float(threshold)
+        if not math.isfinite(t) or t < 0:
+            raise ValueError(f"morse_complexes: threshold {threshold!r}: must be a finite number >= 0")
+        return {"threshold": t, "relative": None}
     if isinstance(persistence, str):
         s = persistence.strip()
-        if not s.endswith("%"):
-            raise ValueError(f"morse_complexes: persistence {persistence!r}: give a number (absolute, in the "
-                             "field's units) or a percentage of the field's range such as '5%'")
+        percent = s.endswith("%")
         try:
-            percent = float(s[:-1])
+            value = float(s[:-1] if percent else s)
         except ValueError:
-            raise ValueError(f"morse_complexes: persistence {persistence!r} is not a percentage (e.g. '5%')") \
-                from None
-        if not math.isfinite(percent) or not 0 <= percent <= 100:
-            raise ValueError(f"morse_complexes: persistence {persistence!r}: a percentage in [0%, 100%]")
-        # as the CLI's --persistence 5%: the fraction 5 / 100 times the range
-        return {"threshold": 0.0, "relative": percent / 100}
-    if isinstance(persistence, bool) or not isinstance(persistence, numbers.Real):
-        raise TypeError("morse_complexes: persistence: expected a number or a percentage string such as '5%'")
-    value = float(persistence)
-    if not math.isfinite(value) or value < 0:
-        raise ValueError(f"morse_complexes: persistence {persistence!r}: must be a finite number >= 0")
-    return {"threshold": value, "relative": None}
+            raise ValueError(f"morse_complexes: persistence {persistence!r} is not a fraction (0.05) or a "
+                             "percentage ('5%')") from None
+        if percent:
+            value /= 100
+    elif isinstance(persistence, bool) or not isinstance(persistence, numbers.Real):
+        raise TypeError("morse_complexes: persistence: expected a fraction of the field's range (0.05) or a "
+                        "percentage string such as '5%'")
+    else:
+        value = float(persistence)
+    if not math.isfinite(value) or not 0 <= value <= 1:
+        raise ValueError(f"morse_complexes: persistence {persistence!r}: must be a fraction of the field's "
+                         "range in [0, 1] (or a percentage); for an absolute value give threshold=")
+    return {"threshold": 0.0, "relative": value}
 
 
 def morse_complexes(
@@ -263,6 +273,7 @@ def morse_complexes(
     field: Any = None,
     *,
     persistence: Union[float, str] = 0.0,
+    threshold: Optional[float] = None,
     arcs: bool = True,
     bucket_size: Optional[Union[int, float]] = None,
     max_depth: Optional[int] = None,
@@ -278,9 +289,11 @@ def morse_complexes(
     Args:
         mesh: a :class:`Mesh`, a ``(points, tetrahedra)`` pair, or an :class:`Octree`.
         field: as :func:`critical_points`.
-        persistence: the cancellation threshold: a number (absolute, in the field's units) or a
-            percentage of the field's range over the vertices of the tetrahedra, such as ``"5%"``
-            (the CLI's ``--persistence 5%``).  Default 0: nothing cancelled.
+        persistence: the cancellation threshold as a fraction of the field's range over the vertices
+            of the tetrahedra, as the CLI's ``--persistence``: ``0.05`` or ``"5%"``.  Default 0:
+            nothing cancelled.
+        threshold: the cancellation threshold as an absolute value, in the field's units (instead
+            of ``persistence``).
         arcs: also return the Morse-Smale arcs.
         bucket_size, max_depth, threads, progress: as :func:`critical_points`.
 
@@ -289,14 +302,12 @@ def morse_complexes(
         RuntimeError: the gradient's critical simplices do not add up to the Euler characteristic (a
             bug to report).
     """
-    p = _persistence_argument(persistence)
+    p = _persistence_argument(persistence, threshold)
     values = _field_values(mesh, field, "morse_complexes")
     tree = _octree(mesh, "morse_complexes", bucket_size, max_depth, threads)
     d = _prstar._morse_complexes(tree, values, p["threshold"], p["relative"], bool(arcs), progress)
     counts = dict(d["counts"])
     counts["field"] = _field_name(mesh, field)
-    if p["relative"] is None and p["threshold"] == 0:
-        counts["persistence"] = 0.0  # nothing cancelled: the CLI's default --persistence 0
     a = d.get("arcs")
     return MorseResult(
         ascending_cell=d["ascending_cell"],

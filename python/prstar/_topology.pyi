@@ -116,11 +116,12 @@ def morse_complexes(
     field: Any = None,
     *,
     persistence: Union[float, str] = 0.0,
+    threshold: Optional[float] = None,
     arcs: bool = True,
     bucket_size: Optional[Union[int, float]] = None,
     max_depth: Optional[int] = None,
     threads: Optional[int] = None,
     progress: Optional[ProgressCallback] = None,
 ) -> MorseResult:
-    """The Morse complexes and persistence pairs of a field, as `prstar morse`; persistence is an
-    absolute threshold or a percentage of the field's range ("5%")."""
+    """The Morse complexes and persistence pairs of a field, as `prstar morse`; persistence is a
+    fraction of the field's range (0.05 or "5%", the CLI's --persistence), threshold an absolute value."""

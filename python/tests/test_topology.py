@@ -258,7 +258,7 @@ def test_morse_complexes_match_cli(cli, data_dir, bumps_vtu, tmp_path, name, fie
     check_morse(r, j, mesh, tmp_path)
     assert r.counts["persistence"] == j["persistence"]
     # the same threshold given as an absolute number: the same complexes
-    absolute = prstar.morse_complexes(mesh, field, persistence=j["threshold"], bucket_size=kv, threads=threads)
+    absolute = prstar.morse_complexes(mesh, field, threshold=j["threshold"], bucket_size=kv, threads=threads)
     assert absolute.threshold == j["threshold"]
     check_morse(absolute, j, mesh, tmp_path)
 
@@ -292,7 +292,7 @@ def test_cancellation_merges_cells(data_dir, bumps_vtu):
     pers = np.sort(full.pairs["persistence"][(full.pairs["kind"] == prstar.MINIMUM_SADDLE)
                                              & ~full.pairs["essential"]])
     t = float(pers[len(pers) // 2]) if len(pers) else 0.0
-    cut = prstar.morse_complexes(mesh, "waves", persistence=t, arcs=False)
+    cut = prstar.morse_complexes(mesh, "waves", threshold=t, arcs=False)
     minima = full.pairs["kind"] == prstar.MINIMUM_SADDLE
     kept = full.pairs["extremum"][minima & ~(full.pairs["persistence"] < t)]
     assert sorted(np.unique(cut.ascending_cell).tolist()) == sorted(kept.tolist())
@@ -497,11 +497,19 @@ def test_errors(data_dir, bumps_vtu):
     tree = prstar.Octree(mesh.points, mesh.tetrahedra)
     with pytest.raises(ValueError, match="no field"):
         prstar.critical_points(tree)
-    for bad in ("5", "abc%", "101%", "-1%", -0.5, math.inf, math.nan):
+    for bad in ("5", "abc%", "101%", "-1%", -0.5, 1.5, math.inf, math.nan):
         with pytest.raises(ValueError, match="persistence"):
             prstar.morse_complexes(mesh, "x", persistence=bad)
     with pytest.raises(TypeError, match="persistence"):
         prstar.morse_complexes(mesh, "x", persistence=[1])
+    for bad in (-1.0, math.inf, math.nan):
+        with pytest.raises(ValueError, match="threshold"):
+            prstar.morse_complexes(mesh, "x", threshold=bad)
+    with pytest.raises(ValueError, match="not both"):
+        prstar.morse_complexes(mesh, "x", persistence="5%", threshold=0.1)
+    # a fraction and the same percentage: the same threshold, as the CLI's 0.05 and 5%
+    assert prstar.morse_complexes(mesh, "x", persistence=0.05, arcs=False).threshold == \
+        prstar.morse_complexes(mesh, "x", persistence="5%", arcs=False).threshold
 
     def stop(done, total):
         raise KeyboardInterrupt
