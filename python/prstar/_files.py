@@ -55,6 +55,10 @@ _MESHIO_VTK_TYPES = {
 
 _INT32 = np.iinfo(np.int32)
 
+# meshio's bookkeeping of gmsh entities (not data): skipped by from_meshio, as the package's gmsh
+# reader skips the entity tags.
+_MESHIO_GMSH_ENTITIES = ("gmsh:dim_tags", "gmsh:geometrical")
+
 
 def _path(path: PathLike, function: str) -> str:
     try:
@@ -177,8 +181,9 @@ def write(
         point_data = {**mesh.point_data, **(point_data or {})}
         cell_data = {**mesh.cell_data, **(cell_data or {})}
         label_names = {**mesh.label_names, **(label_names or {})}
-    _write(target, points, tetrahedra, labels, dict(point_data or {}), dict(cell_data or {}), dict(label_names or {}),
-           binary, compression, version, overwrite)
+    names = {int(k): str(v) for k, v in (label_names or {}).items()}
+    _write(target, points, tetrahedra, labels, dict(point_data or {}), dict(cell_data or {}), names, binary,
+           compression, version, overwrite)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -269,9 +274,12 @@ def from_meshio(m: Any) -> Mesh:
     point-data arrays (as float64; arrays of several components are skipped with a warning); the
     cell data of the tetrahedra: the first integer-valued array named as in
     :data:`LABEL_ARRAY_NAMES` (meshio's ``gmsh:physical``, ``medit:ref``, ...) gives the labels,
-    the other one-component arrays are cell data (``gmsh:geometrical`` too); the names of the
-    volume groups of ``field_data`` (``{name: [tag, 3]}``, gmsh's ``$PhysicalNames``) as
-    label_names.
+    the other one-component arrays are cell data; the names of the volume groups of ``field_data``
+    (``{name: [tag, 3]}``, gmsh's ``$PhysicalNames``) as label_names.  meshio's gmsh entity tags
+    (``gmsh:geometrical``, ``gmsh:dim_tags``) are left out, as the package's gmsh reader leaves them.
+
+    Args:
+        m: a ``meshio.Mesh``.
 
     Raises:
         ImportError: meshio is not installed.
@@ -297,6 +305,8 @@ def from_meshio(m: Any) -> Mesh:
                                    "from_meshio")
     point_data, several = {}, []
     for name, values in m.point_data.items():
+        if name in _MESHIO_GMSH_ENTITIES:
+            continue
         a = _scalar(values)
         if a is None or a.shape[0] != len(points):
             several.append(name)
@@ -305,6 +315,8 @@ def from_meshio(m: Any) -> Mesh:
     _warn_skipped("from_meshio", "point-data arrays", several)
     cell_arrays, several = [], []
     for name, per_block in m.cell_data.items():
+        if name in _MESHIO_GMSH_ENTITIES:
+            continue
         parts = [_scalar(v) for v, k in zip(per_block, keep) if k]
         if not parts or any(p is None for p in parts):
             several.append(name)
@@ -438,6 +450,9 @@ def to_vtk(mesh: Mesh) -> Any:
     the tetrahedra, the labels as the int32 cell array ``label`` (the name the package's writers
     give them), the point and cell data as double arrays of their names.  The arrays are copied
     into VTK's.
+
+    Args:
+        mesh: a :class:`Mesh`.
 
     Raises:
         ImportError: VTK's Python bindings are not installed.

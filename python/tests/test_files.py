@@ -325,7 +325,23 @@ def test_meshio_files_through_conversions(sample, tmp_path):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         meshio.write(path, m, file_format="gmsh22")
-    assert_same_mesh(prstar.read(path), sample, data=False)
+    r = prstar.read(path)
+    assert_same_mesh(r, sample, data=False)
+    # meshio's gmsh entity tags are not data: from_meshio leaves them out, as the package's reader
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", UserWarning)
+        assert_same_mesh(prstar.from_meshio(meshio.read(path)), r)
+    path = tmp_path / "module.msh"  # the module's gmsh 4.1 (label names, data) through meshio
+    prstar.write(path, sample)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", UserWarning)
+        back = prstar.from_meshio(meshio.read(path))
+    order = np.lexsort(back.tetrahedra.T[::-1])  # meshio: grouped by label (see above)
+    ref = np.lexsort(sample.tetrahedra.T[::-1])
+    np.testing.assert_array_equal(back.tetrahedra[order], sample.tetrahedra[ref])
+    np.testing.assert_array_equal(back.labels[order], sample.labels[ref])
+    assert back.label_names == sample.label_names
+    assert list(back.point_data) == list(sample.point_data) and list(back.cell_data) == ["q"]
 
 
 def mixed_grid(sample):
@@ -489,6 +505,11 @@ def test_path_types(sample, tmp_path):
     assert_same_mesh(prstar.read(pathlib.Path(tmp_path / "a.vtu")), prstar.read(str(tmp_path / "a.vtu")))
     with pytest.raises(TypeError):
         prstar.read(42)
+    # a TetGen mesh by either of its names (both files written and read)
+    prstar.write(tmp_path / "t.ele", sample)
+    assert (tmp_path / "t.node").exists()
+    assert_same_mesh(prstar.read(tmp_path / "t.ele"), prstar.read(tmp_path / "t.node"))
+    np.testing.assert_array_equal(prstar.read(tmp_path / "t.ele").labels, sample.labels)
 
 
 def write_text(path: pathlib.Path, text: str) -> pathlib.Path:
