@@ -52,8 +52,18 @@ fi
   --arcs "$work/morse_arcs.vtp" --csv "$work/morse_pairs.csv" --json > "$work/morse.json"
 
 render=(/usr/bin/python3 "$root/scripts/render_pictures.py" "$work" "$out")
+offscreen=()
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run > /dev/null; then
-  xvfb-run -a -s "-screen 0 1280x1024x24" "${render[@]}"
+  offscreen=(xvfb-run -a -s "-screen 0 1280x1024x24")
+fi
+"${offscreen[@]}" "${render[@]}"
+
+# The Python example's picture (the module from PRSTAR_PYTHON, default build/python, when built):
+# the distortion of the height on the boundary of the octree's mesh.
+python_dir="${PRSTAR_PYTHON:-$root/build/python}"
+if [ -f "$python_dir/prstar/__init__.py" ]; then
+  PYTHONPATH="$python_dir" "${offscreen[@]}" /usr/bin/python3 \
+    "$root/examples/PR_star_octree/python/boundary_and_curvature.py" "$octree_mesh" z -o "$out/python_distortion.png"
 else
-  "${render[@]}"
+  echo "make_pictures.sh: no Python module in $python_dir (PRSTAR_PYTHON): python_distortion.png not remade" >&2
 fi
