@@ -8,7 +8,16 @@ from typing import Any, Dict, Optional, Tuple, Union
 
 from ._core import Mesh
 
-__all__: list
+__all__ = [
+    "read",
+    "write",
+    "from_meshio",
+    "to_meshio",
+    "from_vtk",
+    "to_vtk",
+    "EXTENSIONS",
+    "LABEL_ARRAY_NAMES",
+]
 
 PathLike = Union[str, "os.PathLike[str]"]
 

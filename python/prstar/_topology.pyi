@@ -2,13 +2,29 @@
 # SPDX-License-Identifier: LGPL-3.0-or-later
 """Type stubs of prstar._topology: the topology of a scalar field (``prstar critical``, ``prstar morse``)."""
 
+from dataclasses import dataclass
 from typing import Any, Dict, Iterator, Optional, Tuple, Union
 
 import numpy as np
 
 from ._core import MeshLike, ProgressCallback
 
-__all__: list
+__all__ = [
+    "MINIMUM",
+    "SADDLE1",
+    "SADDLE2",
+    "MAXIMUM",
+    "DEGENERATE",
+    "REGULAR",
+    "CRITICAL_TYPE_NAMES",
+    "MINIMUM_SADDLE",
+    "SADDLE_MAXIMUM",
+    "CriticalPointsResult",
+    "MorseArcs",
+    "MorseResult",
+    "critical_points",
+    "morse_complexes",
+]
 
 MINIMUM: int  # 0: empty lower link
 SADDLE1: int  # 1: two lower components, one upper
@@ -20,6 +36,7 @@ CRITICAL_TYPE_NAMES: Tuple[str, ...]  # "minimum", "1-saddle", "2-saddle", "maxi
 MINIMUM_SADDLE: int  # 0: the kind of a persistence pair of a minimum and a 1-saddle
 SADDLE_MAXIMUM: int  # 1: the kind of a pair of a 2-saddle and a maximum
 
+@dataclass
 class CriticalPointsResult:
     """What critical_points returns: per-vertex types and the non-regular vertices with their links."""
 
@@ -59,6 +76,7 @@ def critical_points(
     """The critical type of every vertex (lower/upper link components), as `prstar critical`; with
     gradient=True also the Forman gradient, checked against the Euler characteristic."""
 
+@dataclass
 class MorseArcs:
     """The Morse-Smale arcs as polylines: arc i is points[offsets[i]:offsets[i + 1]]."""
 
@@ -84,6 +102,7 @@ class MorseArcs:
         """The points (m, 3) of arc i."""
     def __iter__(self) -> Iterator[np.ndarray]: ...
 
+@dataclass
 class MorseResult:
     """What morse_complexes returns: the cells, the persistence pairs, the arcs, the counts."""
 
