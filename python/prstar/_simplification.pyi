@@ -3,14 +3,16 @@
 """Type stubs of prstar._simplification: validation (``prstar validate``) and simplification
 (``prstar simplify``)."""
 
+from dataclasses import dataclass
 from typing import Any, Dict, List, Optional, Union
 
 import numpy as np
 
 from ._core import Mesh, MeshLike, ProgressCallback
 
-__all__: list
+__all__ = ["ValidationReport", "validate", "SimplifyResult", "simplify"]
 
+@dataclass
 class ValidationReport:
     """What validate returns: the counts of ``prstar validate --json`` and the wrong elements (user numbering)."""
 
@@ -22,8 +24,10 @@ class ValidationReport:
     nonmanifold_triangle_tetrahedra: List[np.ndarray]  # the tetrahedra of each, increasing
     nonmanifold_vertices: np.ndarray  # (k,) int64
     unreferenced_vertices: np.ndarray  # (k,) int64 (a warning)
-    positive: int  # tetrahedra positively oriented as listed
-    negative: int  # tetrahedra negatively oriented as listed
+    positive: int = ...  # tetrahedra positively oriented as listed
+    negative: int = ...  # tetrahedra negatively oriented as listed
+    _inverted_vertices: np.ndarray = ...  # (k, 4) the vertices of the inverted tetrahedra, as listed
+    _flat_vertices: np.ndarray = ...  # (k, 4) those of the flat ones
     @property
     def euler_characteristic(self) -> int:
         """V - E + F - T over the referenced vertices."""
@@ -47,6 +51,7 @@ def validate(
     """Orientation, flat and non-manifold elements, Euler characteristic, boundary components
     (``prstar validate``); an invalid mesh is a report, not an error."""
 
+@dataclass
 class SimplifyResult:
     """What simplify returns: the simplified mesh and the statistics of ``prstar simplify --json``."""
 
@@ -56,7 +61,7 @@ class SimplifyResult:
     target_reached: bool  # False: stopped before the target (the CLI's exit status 4)
     input_vertex: np.ndarray  # (n,) int64 the input vertex of each output vertex
     input_tetrahedron: np.ndarray  # (m,) int64 the input tetrahedron of each output tetrahedron
-    target: float  # the fraction of the tetrahedra to remove (0: none)
+    target: float = ...  # the fraction of the tetrahedra to remove (0: none)
     @property
     def message(self) -> str:
         """Why it stopped before the target ("" when it did not)."""
