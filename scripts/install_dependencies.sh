@@ -19,10 +19,10 @@ build=(g++ make cmake libcgal-dev libboost-dev libeigen3-dev libtbb-dev libgmp-d
 # Open MPI for the distributed octree (optional: without it the MPI tool commands, tests and
 # example are not built); HDF5 for the XDMF heavy data (optional: without it only inline-XML .xdmf
 # files are read and written) and h5py for meshio's XDMF files (interop_xdmf.py); pybind11, the
-# Python headers, numpy and pytest for the Python module and its tests (optional: without them the
+# Python headers, numpy, pytest and mypy for the Python module and its tests (optional: without them the
 # module is not built; scripts/install_python.sh installs the module alone).
 test_only=(doxygen python3-vtk9 python3-meshio gmsh xvfb libopenmpi-dev openmpi-bin libhdf5-dev python3-h5py
-           pybind11-dev python3-dev python3-numpy python3-pytest)
+           pybind11-dev python3-dev python3-numpy python3-pytest mypy)
 case "${1:-}" in
   --build-only) packages=("${build[@]}") ;;
   --python) packages=("${build[@]}" pybind11-dev python3-dev python3-numpy) ;;

@@ -74,7 +74,9 @@ class BoundaryResult:
     @property
     def boundary_triangles(self) -> Optional[np.ndarray]:
         """The triangles on the boundary of the domain (the interfaces between labels left out)."""
-        return None if self.triangles is None else self.triangles[~self.interface]
+        if self.triangles is None or self.interface is None:
+            return None
+        return self.triangles[~self.interface]
 
 
 def boundary(
