@@ -24,7 +24,11 @@ RSS minus the input arrays' size) goes to --out with the machine's load, date, c
 
 usage: /usr/bin/python3 bench_python.py --prstar-python BUILD/python \\
            --cpp BUILD/benchmark/PR_star_octree/bench_python_api [--cells 120] [--repeat 3] [--kv 50]
-           [--out results/python.md]
+           [--threads N] [--out results/python.md]
+
+Wall-clock times on a shared machine are only as good as its quiet: each run also reports its CPU
+time (user + system, all threads) and "others", the cores that the machine's other processes used
+meanwhile (from /proc/stat less the run's own CPU time), so that a disturbed run can be told apart.
 """
 
 from __future__ import annotations
@@ -33,6 +37,7 @@ import argparse
 import datetime
 import json
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -53,7 +58,7 @@ def status_kib(key: str) -> int:
     return 0
 
 
-def python_side(points_file: str, tets_file: str, surface: bool, kv: int) -> None:
+def python_side(points_file: str, tets_file: str, surface: bool, kv: int, threads: int) -> None:
     """Loads the arrays, times prstar.Octree + prstar.boundary, prints the JSON line."""
     import numpy as np
     import prstar
@@ -63,11 +68,11 @@ def python_side(points_file: str, tets_file: str, surface: bool, kv: int) -> Non
     input_bytes = points.nbytes + tets.nbytes
     rss_after_load = status_kib("VmRSS:")
 
-    t0 = time.perf_counter()
-    tree = prstar.Octree(points, tets, bucket_size=kv)
-    t1 = time.perf_counter()
+    c0, t0 = time.process_time(), time.perf_counter()
+    tree = prstar.Octree(points, tets, bucket_size=kv, threads=threads or None)
+    t1, c1 = time.perf_counter(), time.process_time()
     result = prstar.boundary(tree, surface=surface)
-    t2 = time.perf_counter()
+    t2, c2 = time.perf_counter(), time.process_time()
     peak = status_kib("VmHWM:")  # before the checksums' temporaries
 
     codes = result.vertex_types.astype(np.uint64)
@@ -79,8 +84,9 @@ def python_side(points_file: str, tets_file: str, surface: bool, kv: int) -> Non
         tri_sum = int(np.sum(tri * np.arange(1, tri.size + 1, dtype=np.uint64), dtype=np.uint64))
         counts["surface_triangles"] = int(result.triangles.shape[0])
     print(json.dumps({
-        "side": "python", "surface": surface, "kv": kv, "threads": 0,
+        "side": "python", "surface": surface, "kv": kv, "threads": threads,
         "build_s": t1 - t0, "boundary_s": t2 - t1, "total_s": t2 - t0,
+        "build_cpu_s": c1 - c0, "boundary_cpu_s": c2 - c1, "total_cpu_s": c2 - c0,
         "counts": counts, "code_checksum": code_sum, "triangle_checksum": tri_sum,
         "input_bytes": input_bytes, "rss_after_load_kib": rss_after_load, "peak_rss_kib": peak,
     }), flush=True)
@@ -118,13 +124,28 @@ def kuhn_lattice(cells: int, seed: int = 20260421) -> Tuple[Any, Any]:
     return points, tets
 
 
+def busy_cpu_seconds() -> float:
+    """The CPU seconds all processes of the machine have used (/proc/stat, all cores)."""
+    with open("/proc/stat") as f:
+        v = [int(x) for x in f.readline().split()[1:]]
+    # user nice system idle iowait irq softirq steal ...: all but idle and iowait
+    return (sum(v[:8]) - v[3] - v[4]) / os.sysconf("SC_CLK_TCK")
+
+
 def run_json(cmd: List[str], env: Optional[Dict[str, str]] = None) -> Dict[str, Any]:
-    """Runs `cmd`, returns its last stdout line as JSON (exits with its code on a failure)."""
+    """Runs `cmd`, returns its last stdout line as JSON (exits with its code on a failure), with
+    "others": the cores the machine's other processes used on average while it ran (the machine's busy
+    time less the child's own CPU time, over the wall time)."""
+    ru0, busy0, w0 = resource.getrusage(resource.RUSAGE_CHILDREN), busy_cpu_seconds(), time.perf_counter()
     p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    ru1, busy1, w1 = resource.getrusage(resource.RUSAGE_CHILDREN), busy_cpu_seconds(), time.perf_counter()
     if p.returncode != 0:
         sys.stderr.write(f"failed ({p.returncode}): {' '.join(cmd)}\n{p.stderr}")
         sys.exit(p.returncode or 1)
-    return json.loads(p.stdout.strip().splitlines()[-1])
+    res = json.loads(p.stdout.strip().splitlines()[-1])
+    own = (ru1.ru_utime + ru1.ru_stime) - (ru0.ru_utime + ru0.ru_stime)
+    res["others"] = max(0.0, (busy1 - busy0 - own) / (w1 - w0))
+    return res
 
 
 def machine_facts() -> Dict[str, str]:
@@ -157,6 +178,9 @@ def table(runs: Dict[Tuple[str, bool], List[Dict[str, Any]]], input_bytes: int) 
         ("build (s)", lambda r: r["build_s"], "{:.3f}"),
         ("boundary (s)", lambda r: r["boundary_s"], "{:.3f}"),
         ("**total (s)**", lambda r: r["total_s"], "{:.3f}"),
+        ("build CPU (s)", lambda r: r["build_cpu_s"], "{:.3f}"),
+        ("boundary CPU (s)", lambda r: r["boundary_cpu_s"], "{:.3f}"),
+        ("total CPU (s)", lambda r: r["total_cpu_s"], "{:.3f}"),
         ("RSS after load (MiB)", lambda r: r["rss_after_load_kib"] / 1024, "{:.0f}"),
         ("**peak RSS (MiB)**", lambda r: r["peak_rss_kib"] / 1024, "{:.0f}"),
         ("peak RSS - input arrays (MiB)", lambda r: (r["peak_rss_kib"] - input_kib) / 1024, "{:.0f}"),
@@ -175,12 +199,13 @@ def table(runs: Dict[Tuple[str, bool], List[Dict[str, Any]]], input_bytes: int) 
 
 def main() -> int:
     if len(sys.argv) > 1 and sys.argv[1] == "_python":
-        python_side(sys.argv[2], sys.argv[3], sys.argv[4] == "1", int(sys.argv[5]))
+        python_side(sys.argv[2], sys.argv[3], sys.argv[4] == "1", int(sys.argv[5]), int(sys.argv[6]))
         return 0
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--cells", type=int, default=120, help="N: N^3 cubes, 6 N^3 tetrahedra (default 120)")
     ap.add_argument("--repeat", type=int, default=3, help="runs of each side and setting (default 3)")
     ap.add_argument("--kv", type=int, default=50, help="bucket_size / --kv (default 50)")
+    ap.add_argument("--threads", type=int, default=0, help="threads of both sides (default 0: all cores)")
     ap.add_argument("--out", help="the Markdown file to write (default: stdout only)")
     ap.add_argument("--prstar-python", required=True, help="BUILD/python (the PYTHONPATH of prstar)")
     ap.add_argument("--cpp", required=True, help="BUILD/benchmark/PR_star_octree/bench_python_api")
@@ -207,23 +232,28 @@ def main() -> int:
         facts_before = machine_facts()
         runs: Dict[Tuple[str, bool], List[Dict[str, Any]]] = {
             (s, f): [] for s in ("cpp", "python") for f in (False, True)}
+        sequence: List[Tuple[int, Dict[str, Any]]] = []  # (repetition, result) in run order
         for r in range(args.repeat):
             for surface in (False, True):
                 # alternate which side goes first, so that neither always follows the other
                 order = ("cpp", "python") if (r + surface) % 2 == 0 else ("python", "cpp")
                 for side in order:
                     if side == "cpp":
-                        cmd = [args.cpp, points_file, tets_file, "--kv", str(args.kv)]
+                        cmd = [args.cpp, points_file, tets_file, "--kv", str(args.kv), "--threads",
+                               str(args.threads)]
                         if surface:
                             cmd.append("--surface")
                         res = run_json(cmd)
                     else:
                         res = run_json([sys.executable, os.path.abspath(__file__), "_python", points_file,
-                                        tets_file, "1" if surface else "0", str(args.kv)], env)
+                                        tets_file, "1" if surface else "0", str(args.kv),
+                                        str(args.threads)], env)
                     runs[(side, surface)].append(res)
+                    sequence.append((r + 1, res))
                     print(f"  run {r + 1} surface={surface} {side:6s}: build {res['build_s']:.3f} s, "
-                          f"boundary {res['boundary_s']:.3f} s, total {res['total_s']:.3f} s, peak RSS "
-                          f"{mib(res['peak_rss_kib'])} MiB (after load {mib(res['rss_after_load_kib'])})",
+                          f"boundary {res['boundary_s']:.3f} s, total {res['total_s']:.3f} s (CPU "
+                          f"{res['total_cpu_s']:.3f} s), peak RSS {mib(res['peak_rss_kib'])} MiB (after load "
+                          f"{mib(res['rss_after_load_kib'])}), others {res['others']:.2f} cores",
                           flush=True)
         facts_after = machine_facts()
 
@@ -243,8 +273,10 @@ def main() -> int:
     lines = [
         f"Lattice {args.cells}^3 cubes (jittered Kuhn): {nv:,} vertices, {nt:,} tetrahedra; input arrays "
         f"{input_bytes / 2**20:.0f} MiB (points float64 {nv * 24 / 2**20:.0f} MiB, tetrahedra int64 "
-        f"{nt * 32 / 2**20:.0f} MiB); k_v = {args.kv}; all cores (threads=None); {args.repeat} runs of each "
-        f"side and setting, alternating, each in a fresh process.",
+        f"{nt * 32 / 2**20:.0f} MiB); k_v = {args.kv}; "
+        f"{'all cores (threads=None)' if not args.threads else f'threads={args.threads}'}; {args.repeat} runs "
+        f"of each side and setting, alternating, each in a fresh process.  Times are wall-clock seconds of "
+        f"the timed calls (CPU: user + system of all threads); peak RSS is VmHWM.",
         "",
         f"Counts (equal on both sides: {'yes' if not mismatches else 'NO'}): "
         f"{c['boundary_vertices']:,} boundary vertices, {c['interior_vertices']:,} interior, "
@@ -252,12 +284,21 @@ def main() -> int:
         "",
         *table(runs, input_bytes),
         "",
+        "Each run, in order (others: the cores the machine's other processes used meanwhile, on average):",
+        "",
+        "| run | surface | side | build (s) | boundary (s) | total (s) | total CPU (s) | peak RSS (MiB) | others |",
+        "|---:|---|---|---:|---:|---:|---:|---:|---:|",
+        *[f"| {r} | {res['surface']} | {res['side']} | {res['build_s']:.3f} | {res['boundary_s']:.3f} | "
+          f"{res['total_s']:.3f} | {res['total_cpu_s']:.3f} | {mib(res['peak_rss_kib'])} | {res['others']:.2f} |"
+          for r, res in sequence],
+        "",
         f"Machine: {facts_before['cores']} cores; date {facts_before['date']}; commit {facts_before['commit']}.",
         f"Load before: `{facts_before['uptime']}`",
         f"Load after: `{facts_after['uptime']}`",
         "",
         f"Command: `/usr/bin/python3 benchmark/PR_star_octree/bench_python.py --cells {args.cells} "
-        f"--repeat {args.repeat} --kv {args.kv} --prstar-python BUILD/python "
+        f"--repeat {args.repeat} --kv {args.kv}{f' --threads {args.threads}' if args.threads else ''} "
+        f"--prstar-python BUILD/python "
         f"--cpp BUILD/benchmark/PR_star_octree/bench_python_api`",
     ]
     text = "\n".join(lines) + "\n"
