@@ -114,10 +114,6 @@ Numpy_input::Numpy_input(py::handle points, py::handle tetrahedra, py::handle la
   }
 }
 
-long long Numpy_input::tet(std::size_t t, std::size_t k) const {
-  return tetrahedra_.get(t, k);
-}
-
 py::array_t<double> points_to_numpy(std::vector<Point_3>&& points) {
   static_assert(sizeof(Point_3) == 3 * sizeof(double), "Point_3 is three doubles");
   const auto n = static_cast<py::ssize_t>(points.size());

@@ -68,36 +68,56 @@ public:
   std::size_t size() const { return static_cast<std::size_t>(rows_); }
   bool empty() const { return rows_ == 0; }
   T get(std::size_t i, std::size_t j = 0) const {
-    const char* p = data_ + static_cast<py::ssize_t>(i) * s0_ + static_cast<py::ssize_t>(j) * s1_;
-    switch (code_) {
-    case 'f':
-      return static_cast<T>(load<float>(p));
-    case 'd':
-      return static_cast<T>(load<double>(p));
-    case 'b':
-      return static_cast<T>(load<std::int8_t>(p));
-    case 'h':
-      return static_cast<T>(load<std::int16_t>(p));
-    case 'i':
-      return static_cast<T>(load<std::int32_t>(p));
-    case 'l':
-      return static_cast<T>(load<std::int64_t>(p));
-    case 'B':
-      return static_cast<T>(load<std::uint8_t>(p));
-    case 'H':
-      return static_cast<T>(load<std::uint16_t>(p));
-    case 'I':
-      return static_cast<T>(load<std::uint32_t>(p));
-    case 'L':
-      return static_cast<T>(load<std::uint64_t>(p));
-    }
-    return T();
+    return dispatch([&](auto u) {
+      using U = decltype(u);
+      return static_cast<T>(
+          load<U>(data_ + static_cast<py::ssize_t>(i) * s0_ + static_cast<py::ssize_t>(j) * s1_));
+    });
+  }
+  /// the first `N` values of row `i`, with one dtype dispatch for the row (the octree's copy of a
+  /// big array calls this once per point or tetrahedron)
+  template <std::size_t N>
+  std::array<T, N> row(std::size_t i) const {
+    return dispatch([&](auto u) {
+      using U = decltype(u);
+      const char* p = data_ + static_cast<py::ssize_t>(i) * s0_;
+      std::array<T, N> r;
+      for (std::size_t k = 0; k < N; ++k)
+        r[k] = static_cast<T>(load<U>(p + static_cast<py::ssize_t>(k) * s1_));
+      return r;
+    });
   }
   const py::array& array() const { return array_; }
   /// the numpy dtype character after normalisation ('f', 'd', 'i', 'l', ...)
   char code() const { return code_; }
 
 private:
+  // calls f(U()) with U the element type of the array
+  template <class F>
+  auto dispatch(F&& f) const {
+    switch (code_) {
+    case 'f':
+      return f(float());
+    case 'b':
+      return f(std::int8_t());
+    case 'h':
+      return f(std::int16_t());
+    case 'i':
+      return f(std::int32_t());
+    case 'l':
+      return f(std::int64_t());
+    case 'B':
+      return f(std::uint8_t());
+    case 'H':
+      return f(std::uint16_t());
+    case 'I':
+      return f(std::uint32_t());
+    case 'L':
+      return f(std::uint64_t());
+    default:
+      return f(double());
+    }
+  }
   template <class U>
   static U load(const char* p) {
     U u;
@@ -122,18 +142,16 @@ public:
   std::size_t number_of_vertices() const { return points_.size(); }
   std::size_t number_of_tetrahedra() const { return tetrahedra_.size(); }
   Point_3 point(std::size_t i) const {
-    return Point_3(points_.get(i, 0), points_.get(i, 1), points_.get(i, 2));
+    const auto c = points_.row<3>(i);
+    return Point_3(c[0], c[1], c[2]);
   }
-  std::array<long long, 4> tetrahedron(std::size_t t) const {
-    return {{tet(t, 0), tet(t, 1), tet(t, 2), tet(t, 3)}};
-  }
+  std::array<long long, 4> tetrahedron(std::size_t t) const { return tetrahedra_.row<4>(t); }
   bool has_scalar_field() const { return has_field_; }
   double scalar(std::size_t i) const { return field_.get(i); }
   bool has_tetrahedron_labels() const { return has_labels_; }
   int tetrahedron_label(std::size_t t) const { return labels_.get(t); }
 
 private:
-  long long tet(std::size_t t, std::size_t k) const;
   Array_view<double> points_;
   Array_view<long long> tetrahedra_;
   Array_view<int> labels_;

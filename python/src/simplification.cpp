@@ -163,20 +163,6 @@ struct Progress_visitor : PSO::Simplification_visitor_base {
   }
 };
 
-const char* stop_name(PSO::Simplification_stop s) {
-  switch (s) {
-  case PSO::Simplification_stop::TARGET_REACHED:
-    return "target_reached";
-  case PSO::Simplification_stop::NOTHING_LEFT:
-    return "nothing_left";
-  case PSO::Simplification_stop::BLOCKED:
-    return "blocked";
-  case PSO::Simplification_stop::MAX_ROUNDS:
-    return "max_rounds";
-  }
-  return "";
-}
-
 py::dict blocked_dict(const PSO::Simplification_statistics::Blocked& b) {
   py::dict d; // the JSON's order
   d["different_leaves"] = b.different_leaves;
@@ -279,7 +265,7 @@ py::dict run_simplify(const Input& input, const Simplify_options& s, std::size_t
   stats["rounds"] = st.rounds;
   stats["max_queue"] = st.max_queue_size;
   stats["seconds"] = st.seconds;
-  stats["stop"] = stop_name(st.stop);
+  stats["stop"] = PSO::simplification_stop_name(st.stop);
   stats["blocked"] = blocked_dict(st.blocked);
   stats["blocked_last_round"] = blocked_dict(st.blocked_last_round);
   stats["input_quality"] = quality_dict(q_in);

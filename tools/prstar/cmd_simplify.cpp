@@ -92,20 +92,6 @@ Simplify_settings simplify_settings(const Options& o) {
   return s;
 }
 
-const char* stop_name(PSO::Simplification_stop s) {
-  switch (s) {
-  case PSO::Simplification_stop::TARGET_REACHED:
-    return "target_reached";
-  case PSO::Simplification_stop::NOTHING_LEFT:
-    return "nothing_left";
-  case PSO::Simplification_stop::BLOCKED:
-    return "blocked";
-  case PSO::Simplification_stop::MAX_ROUNDS:
-    return "max_rounds";
-  }
-  return "";
-}
-
 // The reasons of a Blocked record, named as in the JSON, largest first.
 std::vector<std::pair<std::string, std::size_t>> reasons(const PSO::Simplification_statistics::Blocked& b) {
   std::vector<std::pair<std::string, std::size_t>> r{{"different_leaves", b.different_leaves},
@@ -200,7 +186,7 @@ int run_simplify(const Options& o) {
         .field("output_vertices", s.output_vertices)
         .key("kv");
     json_kv(j, kv).field("rounds", s.rounds).field("max_queue", s.max_queue_size).field("seconds", s.seconds);
-    j.field("stop", stop_name(s.stop));
+    j.field("stop", PSO::simplification_stop_name(s.stop));
     blocked(j, "blocked", s.blocked);
     blocked(j, "blocked_last_round", s.blocked_last_round);
     json_quality(j, "input_quality", q_in);
@@ -230,7 +216,7 @@ int run_simplify(const Options& o) {
              (std::isfinite(s.max_boundary_error) && d.diagonal > 0
                   ? fixed(100 * s.max_boundary_error / d.diagonal, 3) + "%)"
                   : std::string("none)"))});
-  t.add({"rounds", "", std::to_string(s.rounds) + " (" + stop_name(s.stop) + ")"});
+  t.add({"rounds", "", std::to_string(s.rounds) + " (" + PSO::simplification_stop_name(s.stop) + ")"});
   t.add({"max queue size", "", std::to_string(s.max_queue_size)});
   Table b({"blocked candidates", "all rounds", "last round"});
   const auto all = reasons(s.blocked);

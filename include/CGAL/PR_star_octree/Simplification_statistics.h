@@ -45,6 +45,24 @@ enum class Simplification_stop {
 };
 
 /// \ingroup PkgPRStarOctreeRef
+/// The name of a `Simplification_stop` in lower case with underscores (`"target_reached"`,
+/// `"nothing_left"`, `"blocked"`, `"max_rounds"`): what `prstar simplify --json` and the Python
+/// module report.
+inline const char* simplification_stop_name(Simplification_stop s) {
+  switch (s) {
+  case Simplification_stop::TARGET_REACHED:
+    return "target_reached";
+  case Simplification_stop::NOTHING_LEFT:
+    return "nothing_left";
+  case Simplification_stop::BLOCKED:
+    return "blocked";
+  case Simplification_stop::MAX_ROUNDS:
+    return "max_rounds";
+  }
+  return "";
+}
+
+/// \ingroup PkgPRStarOctreeRef
 /// Why `simplify()` did not collapse a candidate edge: the first check its preferred collapse failed
 /// (what a collapse filter returns, and what a simplification visitor is told).
 enum class Collapse_refusal {
