@@ -61,7 +61,8 @@ class Mesh:
     def __repr__(self) -> str:
         parts = [f"{self.number_of_vertices} vertices", f"{self.number_of_tetrahedra} tetrahedra"]
         if self.labels is not None:
-            parts.append(f"{len(np.unique(self.labels))} labels")
+            n = len(np.unique(self.labels))
+            parts.append("1 label" if n == 1 else f"{n} labels")
         if self.point_data:
             parts.append("point_data " + ", ".join(self.point_data))
         if self.cell_data:

@@ -277,6 +277,18 @@ Results of the applications come in the user's vertex and tetrahedron order.)")
                                if (o.threads == 0) return py::none();
                                return py::int_(o.threads);
                              })
+      .def("__repr__",
+           [](const Py_octree& o) {
+             const Octree& t = o.get();
+             const std::string kv = t.bucket_size() == Octree::infinite_bucket_size
+                                        ? std::string("inf")
+                                        : std::to_string(t.bucket_size());
+             return "prstar.Octree(" + std::to_string(t.number_of_vertices()) + " vertices, " +
+                    std::to_string(t.number_of_tetrahedra()) + " tetrahedra, bucket_size=" + kv + ", " +
+                    (t.number_of_leaves() == 1 ? std::string("1 leaf")
+                                               : std::to_string(t.number_of_leaves()) + " leaves") +
+                    ", depth " + std::to_string(t.depth()) + ")";
+           })
       .def("statistics", [](const Py_octree& o) { return statistics_dict(o.get().statistics()); })
       .def("leaves", [](const Py_octree& o) { return leaves_dict(o.get()); })
       .def("vertex_order",

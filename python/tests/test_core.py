@@ -189,6 +189,8 @@ def test_statistics_match_cli(mesh_file, cli):
         for key in ("points", "tetrahedra", "nodes", "leaf_tetrahedra"):
             assert s["bytes_detail"][key] == j["storage"]["bytes_detail"][key], key
         assert tree.number_of_leaves == j["leaves"] and tree.depth == j["depth"]
+        assert repr(tree) == (f"prstar.Octree({j['vertices']} vertices, {j['tetrahedra']} tetrahedra, "
+                              f"bucket_size={kv}, {j['leaves']} leaves, depth {j['depth']})")
 
 
 def test_leaves_partition_the_vertices(data_dir):
