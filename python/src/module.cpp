@@ -127,8 +127,6 @@ std::unique_ptr<Py_octree> make_octree(py::handle points, py::handle tetrahedra,
   const Numpy_input input(points, tetrahedra, labels, field);
   auto o = std::make_unique<Py_octree>();
   o->threads = thread_count(threads);
-  o->has_field = input.has_scalar_field();
-  o->input_vertices = input.number_of_vertices();
   const std::size_t kv = bucket_size_argument(bucket_size), depth = max_depth_argument(max_depth);
   {
     Compute_scope scope(o->threads);

@@ -237,8 +237,6 @@ private:
 struct Py_octree {
   std::unique_ptr<Octree> tree;
   std::size_t threads = 0;           ///< 0: all cores
-  bool has_field = false;            ///< built with a `field` array (the octree's scalar field)
-  std::size_t input_vertices = 0;    ///< of the arrays given
   std::vector<Index> from_original_; ///< user vertex -> octree vertex (made on first use)
 
   const Octree& get() const { return *tree; }
