@@ -4,12 +4,13 @@
 // Author(s): The PR-star octree project
 //
 // mesh_quality.h against independent truth: closed forms of the dihedral angles and radius
-// ratios of known tetrahedra; `mesh_quality()` on a few tetrahedra counted by hand; the boundary
-// surfaces against a brute-force std::map of faces; `boundary_distance()` against closed forms (a
-// cube and its translate, a two-label cube) and against CGAL's
-// Polygon_mesh_processing::approximate_Hausdorff_distance on the boundary surfaces (a cube with a
-// bump, a real mesh and its scaled copy); `sharp_edge_distance()` on a cube (12 n sharp edges) and
-// a bevelled cube (distance = the width of the bevel).  Part of the test_cgal_baseline program.
+// ratios of known tetrahedra; `mesh_quality()` and `edge_length_quality()` on a few tetrahedra
+// counted by hand; the boundary surfaces against a brute-force std::map of faces;
+// `boundary_distance()` against closed forms (a cube and its translate, a two-label cube) and
+// against CGAL's Polygon_mesh_processing::approximate_Hausdorff_distance on the boundary surfaces
+// (a cube with a bump, a real mesh and its scaled copy); `sharp_edge_distance()` on a cube (12 n
+// sharp edges) and a bevelled cube (distance = the width of the bevel).  Part of the
+// test_cgal_baseline program.
 
 #include <CGAL/PR_star_octree/IO.h>
 #include <CGAL/PR_star_octree/mesh_quality.h>
@@ -199,6 +200,46 @@ void test_mesh_quality_by_hand() {
   CHECK_EQUAL(e.share_under_5(), 0.);
 }
 
+// `edge_length_quality()` on the Kuhn cube (12 edges of length 1, 6 face diagonals, 1 body
+// diagonal), counted by hand.
+void test_edge_length_quality_by_hand() {
+  const Mesh cube = cube_grid(1, 1);
+  const P::Edge_length_quality a = P::edge_length_quality(cube.points, cube.tets, 1.);
+  CHECK_EQUAL(a.edges, std::size_t(19));
+  CHECK_EQUAL(a.in_range, std::size_t(12));
+  CHECK_EQUAL(a.too_short, std::size_t(0));
+  CHECK_EQUAL(a.too_long, std::size_t(7)); // sqrt(2) and sqrt(3) > 1.33
+  CHECK_EQUAL(a.median_ratio, 1.);
+  CHECK_NEAR(a.share_long(), 7. / 19, 1e-15);
+  // target 1.2: 1/1.2 and sqrt(2)/1.2 are in [0.8, 1.33], sqrt(3)/1.2 is not
+  const P::Edge_length_quality b = P::edge_length_quality(cube.points, cube.tets, 1.2);
+  CHECK_EQUAL(b.in_range, std::size_t(18));
+  CHECK_EQUAL(b.too_long, std::size_t(1));
+  CHECK_NEAR(b.median_ratio, 1 / 1.2, 1e-15);
+  // a sizing field 1 + x: an edge's target is the mean of its ends'
+  std::vector<double> sizing;
+  for (const Point& p : cube.points) sizing.push_back(1 + p.x());
+  const P::Edge_length_quality c = P::edge_length_quality(cube.points, cube.tets, sizing);
+  // short: the 4 x edges (1/1.5), the 4 y and z edges at x = 1 (1/2), the diagonal at x = 1
+  // (sqrt(2)/2); long: the diagonal at x = 0 (sqrt(2)); the other 9 in range
+  CHECK_EQUAL(c.edges, std::size_t(19));
+  CHECK_EQUAL(c.too_short, std::size_t(9));
+  CHECK_EQUAL(c.too_long, std::size_t(1));
+  CHECK_EQUAL(c.in_range, std::size_t(9));
+  CHECK_NEAR(c.median_ratio, 2 * std::sqrt(2.) / 3, 1e-15); // the 10th of 19: a diagonal across x
+  // an even number of edges: the mean of the two middle ones (one tetrahedron: 1, 1, 1, sqrt(2),
+  // sqrt(2), sqrt(3))
+  const std::vector<Tet> one{cube.tets[0]};
+  const P::Edge_length_quality d = P::edge_length_quality(cube.points, one, 1.);
+  CHECK_EQUAL(d.edges, std::size_t(6));
+  CHECK_NEAR(d.median_ratio, (1 + std::sqrt(2.)) / 2, 1e-15);
+  // no tetrahedron: no edge, shares 0, the median NaN
+  const P::Edge_length_quality e = P::edge_length_quality(cube.points, std::vector<Tet>{}, 1.);
+  CHECK_EQUAL(e.edges, std::size_t(0));
+  CHECK_EQUAL(e.share_in_range(), 0.);
+  CHECK(std::isnan(e.median_ratio));
+}
+
 void test_boundary_triangles() {
   namespace I = P::internal::mesh_quality_impl;
   for (const Mesh& m : {cube_grid(3, 1), extrusion({{{0, 0}, {4, 0}, {4, 3}, {3, 4}, {0, 4}}}, 4, 4)}) {
@@ -323,6 +364,7 @@ void test_sharp_edge_distance() {
 void test_mesh_quality(const prstar_test::Data_folders& data) {
   test_tetrahedron_closed_forms();
   test_mesh_quality_by_hand();
+  test_edge_length_quality_by_hand();
   test_boundary_triangles();
   test_boundary_distance();
   test_boundary_distance_real_mesh(data);

@@ -8,7 +8,8 @@
 
 /// \file mesh_quality.h
 /// Measures of a whole tetrahedral mesh, and of how far a simplified mesh is from its input:
-/// the shape of the tetrahedra (`mesh_quality()`), the two-sided sampled Hausdorff distance
+/// the shape of the tetrahedra (`mesh_quality()`), the lengths of the edges against a target
+/// length or a sizing field (`edge_length_quality()`), the two-sided sampled Hausdorff distance
 /// between the boundary surfaces (`boundary_distance()`) and the distance between their sharp
 /// edges (`sharp_edge_distance()`).  They work on plain arrays (points, tetrahedra as
 /// `std::array<Index, 4>`), without an octree, so that they can judge any mesher's output, and
@@ -29,6 +30,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -87,6 +89,113 @@ Mesh_quality mesh_quality(const std::vector<Point_3>& points, const Tetrahedra& 
     if (lo < 10) ++q.under_10_degrees;
   }
   return q;
+}
+
+/// \ingroup PkgPRStarOctreeRef
+/// The lengths of the edges of a mesh against a target length, as computed by
+/// `edge_length_quality()`: how many edges are within `[low, high]` times their target, shorter,
+/// longer, and the median of length / target.
+struct Edge_length_quality {
+  /// the number of edges (each edge of the tetrahedra once)
+  std::size_t edges = 0;
+  /// the edges whose length / target is in `[low, high]`
+  std::size_t in_range = 0;
+  /// the edges whose length / target is below `low`
+  std::size_t too_short = 0;
+  /// the edges whose length / target is above `high`
+  std::size_t too_long = 0;
+  /// the median of length / target (the mean of the two middle values for an even number of edges;
+  /// NaN for no edge)
+  double median_ratio = std::numeric_limits<double>::quiet_NaN();
+
+  /// `in_range / edges` (0 for no edge)
+  double share_in_range() const { return edges ? double(in_range) / double(edges) : 0.; }
+  /// `too_short / edges` (0 for no edge)
+  double share_short() const { return edges ? double(too_short) / double(edges) : 0.; }
+  /// `too_long / edges` (0 for no edge)
+  double share_long() const { return edges ? double(too_long) / double(edges) : 0.; }
+};
+
+namespace internal {
+namespace mesh_quality_impl {
+
+// The edges of `tets` as (smaller, larger) vertex pairs packed in 64 bits, sorted, each once.
+template <class Tetrahedra>
+std::vector<std::uint64_t> sorted_edges(const Tetrahedra& tets) {
+  std::vector<std::uint64_t> keys;
+  keys.reserve(6 * tets.size());
+  for (const auto& t : tets)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const std::uint64_t a = std::uint64_t(t[i]), b = std::uint64_t(t[j]);
+        keys.push_back(a < b ? (a << 32) | b : (b << 32) | a);
+      }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  return keys;
+}
+
+template <class Point_3, class Tetrahedra, class Target>
+Edge_length_quality edge_length_quality(const std::vector<Point_3>& points, const Tetrahedra& tets,
+                                        const Target& target, double low, double high) {
+  if (points.size() > (std::uint64_t(1) << 32))
+    throw std::length_error("edge_length_quality: more than 2^32 vertices");
+  const std::vector<std::uint64_t> edges = sorted_edges(tets);
+  Edge_length_quality r;
+  std::vector<double> ratios;
+  ratios.reserve(edges.size());
+  for (const std::uint64_t e : edges) {
+    const std::size_t a = std::size_t(e >> 32), b = std::size_t(e & 0xffffffffu);
+    const double dx = CGAL::to_double(points[a].x()) - CGAL::to_double(points[b].x());
+    const double dy = CGAL::to_double(points[a].y()) - CGAL::to_double(points[b].y());
+    const double dz = CGAL::to_double(points[a].z()) - CGAL::to_double(points[b].z());
+    const double ratio = std::sqrt(dx * dx + dy * dy + dz * dz) / target(a, b);
+    ratios.push_back(ratio);
+    if (ratio < low)
+      ++r.too_short;
+    else if (ratio > high)
+      ++r.too_long;
+    else
+      ++r.in_range;
+  }
+  r.edges = ratios.size();
+  if (!ratios.empty()) {
+    const std::size_t m = ratios.size() / 2;
+    std::nth_element(ratios.begin(), ratios.begin() + std::ptrdiff_t(m), ratios.end());
+    r.median_ratio = ratios[m];
+    if (ratios.size() % 2 == 0) // the largest of the lower half, after nth_element
+      r.median_ratio =
+          (*std::max_element(ratios.begin(), ratios.begin() + std::ptrdiff_t(m)) + ratios[m]) / 2;
+  }
+  return r;
+}
+
+} // namespace mesh_quality_impl
+} // namespace internal
+
+/// \ingroup PkgPRStarOctreeRef
+/// The lengths of the edges of the tetrahedra `tets` (each a `std::array<Index, 4>` of indices into
+/// `points`) against the target length `target`: the edges within `[low, high]` times the target
+/// (by default `[0.8, 1.33]`, the range that %CGAL's isotropic remeshing aims at, 4/5 and 4/3), the
+/// shorter and longer ones, and the median of length / target.  A length is computed in double
+/// precision as `sqrt(dx*dx + dy*dy + dz*dz)`.
+template <class Point_3, class Tetrahedra>
+Edge_length_quality edge_length_quality(const std::vector<Point_3>& points, const Tetrahedra& tets,
+                                        double target, double low = 0.8, double high = 1.33) {
+  return internal::mesh_quality_impl::edge_length_quality(
+      points, tets, [target](std::size_t, std::size_t) { return target; }, low, high);
+}
+
+/// \ingroup PkgPRStarOctreeRef
+/// The same against a sizing field: `sizing[v]` is the target length at vertex `v`, and the target
+/// of an edge is the mean of its two ends' targets, `(sizing[a] + sizing[b]) / 2`.
+template <class Point_3, class Tetrahedra>
+Edge_length_quality edge_length_quality(const std::vector<Point_3>& points, const Tetrahedra& tets,
+                                        const std::vector<double>& sizing, double low = 0.8,
+                                        double high = 1.33) {
+  return internal::mesh_quality_impl::edge_length_quality(
+      points, tets, [&sizing](std::size_t a, std::size_t b) { return (sizing[a] + sizing[b]) / 2; }, low,
+      high);
 }
 
 namespace internal {
