@@ -102,6 +102,21 @@ struct Simplification_statistics {
     std::size_t filter = 0;  ///< a user's collapse filter (`Collapse_refusal::FILTER`)
   } blocked;
   Blocked blocked_last_round; ///< the same counts in the last round (what stopped a `BLOCKED` run)
+  /// What the optimisation passes (smoothing and flips) and the refinement (edge splits, `remesh()`)
+  /// did, over all rounds; a refused move, flip or split is counted under the first check it failed
+  /// (`flip`: a tetrahedron would flip or become flat, exact `Orientation_3`; `quality`: the worst
+  /// tetrahedron of the region would not get better, or a floor would be crossed; `error`: the bound
+  /// on the distance to the input surface, or a new crease; `link`: the new edge exists already).
+  struct Optimization {
+    std::size_t vertex_moves = 0;  ///< vertices moved by smoothing (interior, on the surface, along curves)
+    std::size_t flips_2_3 = 0;     ///< triangles shared by two tetrahedra replaced by an edge in three
+    std::size_t flips_3_2 = 0;     ///< edges in three tetrahedra removed (three tetrahedra become two)
+    std::size_t flips_4_4 = 0;     ///< edges in four tetrahedra replaced by the other diagonal
+    std::size_t edge_removals = 0; ///< edges in five to seven tetrahedra removed (2n - 4 new tetrahedra)
+    std::size_t splits = 0;        ///< edges split at their midpoint (`remesh()`)
+    std::size_t rounds = 0;        ///< rounds of optimisation only (no collapse), after the simplification
+    Blocked refused_moves, refused_flips, refused_splits; ///< the moves, flips and splits not made
+  } optimization;
   Simplification_stop stop = Simplification_stop::NOTHING_LEFT; ///< why it stopped
   double max_boundary_error = 0; ///< the bound used on the distance to the input surface (infinity: none)
 };

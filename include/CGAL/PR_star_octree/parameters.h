@@ -33,6 +33,10 @@ namespace PR_star_octree {
   X(priority)                                                                                                \
   X(quality_measure)                                                                                         \
   X(quality_floor)                                                                                           \
+  X(min_dihedral_angle)                                                                                      \
+  X(max_dihedral_angle)                                                                                      \
+  X(min_radius_ratio)                                                                                        \
+  X(optimization_rounds)                                                                                     \
   X(feature_angle)                                                                                           \
   X(max_boundary_error)                                                                                      \
   X(collapse_priority)                                                                                       \
@@ -87,7 +91,8 @@ CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_TAG)
 /// | `persistence_threshold(double)`, `arcs_output(OutputIterator)` | `compute_morse_complexes()` | 0, none |
 /// | `domain_curvature_map(PMap)`, `vertex_type_map(PMap)` | `compute_discrete_distortion()` | none |
 /// | `progress(F)` | every leaf-streaming function, `simplify()` | none |
-/// | `target_fraction`, `max_edge_length`, `max_rounds`, `priority`, `quality_measure`, `quality_floor`, `feature_angle`, `max_boundary_error`, `collapse_priority`, `collapse_placement` | `simplify()` (see its documentation) | |
+/// | `target_fraction`, `max_edge_length`, `max_rounds`, `priority`, `quality_measure`, `quality_floor`, `min_dihedral_angle`, `max_dihedral_angle`, `min_radius_ratio`, `optimization_rounds`, `feature_angle`, `max_boundary_error`, `collapse_priority`, `collapse_placement` | `simplify()` (see its documentation) | |
+/// | `min_dihedral_angle`, `max_dihedral_angle`, `min_radius_ratio`, `feature_angle`, `max_boundary_error`, `bucket_size`, `number_of_iterations` (%CGAL's) | `remesh()` (see its documentation) | |
 /// | `vertex_is_constrained_map`, `edge_is_constrained_map`, `get_cost`, `get_placement`, `filter`, `visitor` (%CGAL's) | `simplify()` | none |
 /// | `use_binary_mode(bool)` (%CGAL's), `compression(IO::Compression)`, `format_version(double)` | the writers of `CGAL/PR_star_octree/IO.h` (what each format accepts: `IO/formats.h`) | per format |
 /// | `communicator(MPI_Comm)` | `Distributed_octree_3`, `IO::read_mesh_part()` (MPI) | `MPI_COMM_WORLD` |

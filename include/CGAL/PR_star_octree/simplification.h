@@ -206,7 +206,8 @@ struct Simplify_options {
       Edge_length_priority<Geom_traits>()))>;
   using Default_cost = Either_cost<Priority_cost<Priority>, Quadric_error_cost>;
 
-  explicit Simplify_options(const NP& np)
+  // `remeshing`: for `remesh()` (no target needed).
+  explicit Simplify_options(const NP& np, bool remeshing = false)
       : gt(parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::geom_traits),
                                         Geom_traits())),
         np_(np) {
@@ -218,11 +219,24 @@ struct Simplify_options {
     settings.bucket_size = choose_parameter(get_parameter(np, internal_np::bucket_size),
                                             std::size_t(PR_star_octree_3<Geom_traits>::default_bucket_size));
     settings.max_rounds = choose_parameter(get_parameter(np, internal_np::max_rounds), std::size_t(1000));
-    settings.quality_measure = choose_parameter(get_parameter(np, internal_np::quality_measure),
-                                                Quality_measure::MIN_DIHEDRAL_ANGLE);
-    settings.quality_floor =
-        choose_parameter(get_parameter(np, internal_np::quality_floor),
-                         settings.quality_measure == Quality_measure::RADIUS_RATIO ? 0.1 : 5.);
+    // The older pair (measure, floor) sets the floor of its measure; the three named floors override.
+    const Quality_measure measure = choose_parameter(get_parameter(np, internal_np::quality_measure),
+                                                     Quality_measure::MIN_DIHEDRAL_ANGLE);
+    const double floor = choose_parameter(get_parameter(np, internal_np::quality_floor), -1.);
+    if (floor >= 0 || std::isnan(floor)) {
+      if (measure == Quality_measure::RADIUS_RATIO)
+        settings.min_radius_ratio = floor;
+      else
+        settings.min_dihedral = floor;
+    }
+    settings.min_dihedral =
+        choose_parameter(get_parameter(np, internal_np::min_dihedral_angle), settings.min_dihedral);
+    settings.max_dihedral = choose_parameter(get_parameter(np, internal_np::max_dihedral_angle), 165.);
+    settings.min_radius_ratio =
+        choose_parameter(get_parameter(np, internal_np::min_radius_ratio), settings.min_radius_ratio);
+    settings.optimization_rounds =
+        choose_parameter(get_parameter(np, internal_np::optimization_rounds), std::size_t(2));
+    settings.remesh = remeshing;
     settings.feature_angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 40.);
     error_bound = choose_parameter(get_parameter(np, internal_np::max_boundary_error), -1.);
     quadric_priority = choose_parameter(get_parameter(np, internal_np::collapse_priority),
@@ -289,14 +303,17 @@ private:
       throw std::invalid_argument("simplify: the target fraction must be in [0, 1)");
     if (!(s.max_edge_length > 0))
       throw std::invalid_argument("simplify: the maximum edge length must be positive");
-    if (s.target_fraction == 0 && !(s.max_edge_length < std::numeric_limits<double>::infinity()))
+    if (!s.remesh && s.target_fraction == 0 && !(s.max_edge_length < std::numeric_limits<double>::infinity()))
       throw std::invalid_argument("simplify: give a target fraction or a maximum edge length");
     if (s.bucket_size == 0) throw std::invalid_argument("simplify: the bucket size k_v must be at least 1");
-    if (!(s.quality_floor >= 0) ||
-        (s.quality_measure == Quality_measure::RADIUS_RATIO ? s.quality_floor > 1 : s.quality_floor > 70.5))
+    if (!(s.min_dihedral >= 0 && s.min_dihedral <= 70.5))
       throw std::invalid_argument(
-          "simplify: the quality floor must be in [0, 70.5] degrees (minimum dihedral angle) or "
-          "[0, 1] (radius ratio)");
+          "simplify: the floor on the smallest dihedral angle must be in [0, 70.5] degrees");
+    if (!(s.max_dihedral >= 70.6 && s.max_dihedral <= 180))
+      throw std::invalid_argument(
+          "simplify: the ceiling on the largest dihedral angle must be in [70.6, 180] degrees");
+    if (!(s.min_radius_ratio >= 0 && s.min_radius_ratio <= 1))
+      throw std::invalid_argument("simplify: the floor on the radius ratio must be in [0, 1]");
     if (!(s.feature_angle >= 0))
       throw std::invalid_argument("simplify: the feature angle must be non-negative (degrees)");
     if (std::isnan(error_bound))
@@ -305,6 +322,26 @@ private:
 
   const NP& np_;
 };
+
+} // namespace internal
+
+namespace internal {
+
+// The point data, cell data and label names of `mesh` onto the output of `result`.
+template <class P, class I, class Result>
+void carry_mesh_data(const Indexed_tetrahedral_mesh<P, I>& mesh, Result& result) {
+  for (const Point_data_array& a : mesh.point_data) {
+    Point_data_array b{a.name, std::vector<double>(result.input_vertex.size())};
+    for (std::size_t v = 0; v < b.values.size(); ++v) b.values[v] = a.values[result.input_vertex[v]];
+    result.mesh.point_data.push_back(std::move(b));
+  }
+  for (const Point_data_array& a : mesh.cell_data) {
+    Point_data_array b{a.name, std::vector<double>(result.input_tetrahedron.size())};
+    for (std::size_t t = 0; t < b.values.size(); ++t) b.values[t] = a.values[result.input_tetrahedron[t]];
+    result.mesh.cell_data.push_back(std::move(b));
+  }
+  result.mesh.label_names = mesh.label_names;
+}
 
 } // namespace internal
 
@@ -413,16 +450,40 @@ private:
 ///     \cgalParamType{a model of `PRStarOctreeSimplificationVisitor`}
 ///     \cgalParamDefault{`Simplification_visitor_base` (does nothing)}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{min_dihedral_angle}
+///     \cgalParamDescription{the floor on the smallest dihedral angle: no collapse creates a
+///       tetrahedron under a floor (or over the ceiling) unless the tetrahedra it replaces were as
+///       bad, by every measure, and as many; checked by the default filter (degrees; 0: none)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{5}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_dihedral_angle}
+///     \cgalParamDescription{the ceiling on the largest dihedral angle (degrees; 180: none)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{165}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{min_radius_ratio}
+///     \cgalParamDescription{the floor on the radius ratio (0: none)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.1}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{quality_measure}
-///     \cgalParamDescription{the measure of the quality floor}
+///     \cgalParamDescription{the measure `quality_floor` sets the floor of (the older form of the
+///       two floors above, which override it)}
 ///     \cgalParamType{`Quality_measure`}
 ///     \cgalParamDefault{`Quality_measure::MIN_DIHEDRAL_ANGLE`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{quality_floor}
-///     \cgalParamDescription{no collapse creates a tetrahedron under the floor unless it replaces a
-///       worse one (degrees for the dihedral angle; 0: no floor); checked by the default filter}
+///     \cgalParamDescription{the floor of `quality_measure`}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{5 (degrees), or 0.1 with `Quality_measure::RADIUS_RATIO`}
+///     \cgalParamDefault{`min_dihedral_angle` or `min_radius_ratio`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{optimization_rounds}
+///     \cgalParamDescription{the rounds of optimisation only (flips and smoothing leaf by leaf, see
+///       `remesh()`) after the collapses; with a positive number, each leaf is also optimised after
+///       its collapses in every round; 0: no optimisation, the mesh is only coarsened}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{2}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{feature_angle}
 ///     \cgalParamDescription{surface edges deviating from flat by more than this are sharp features;
@@ -535,17 +596,7 @@ auto simplify(const Indexed_tetrahedral_mesh<P, I>& mesh, const NP& np = paramet
   auto input = make_input(mesh.points, mesh.tetrahedra); // the point data is carried below, by name
   if (!mesh.tetrahedron_labels.empty()) input.set_tetrahedron_labels(mesh.tetrahedron_labels);
   auto result = simplify(input, np);
-  for (const Point_data_array& a : mesh.point_data) {
-    Point_data_array b{a.name, std::vector<double>(result.input_vertex.size())};
-    for (std::size_t v = 0; v < b.values.size(); ++v) b.values[v] = a.values[result.input_vertex[v]];
-    result.mesh.point_data.push_back(std::move(b));
-  }
-  for (const Point_data_array& a : mesh.cell_data) {
-    Point_data_array b{a.name, std::vector<double>(result.input_tetrahedron.size())};
-    for (std::size_t t = 0; t < b.values.size(); ++t) b.values[t] = a.values[result.input_tetrahedron[t]];
-    result.mesh.cell_data.push_back(std::move(b));
-  }
-  result.mesh.label_names = mesh.label_names;
+  internal::carry_mesh_data(mesh, result);
   return result;
 }
 

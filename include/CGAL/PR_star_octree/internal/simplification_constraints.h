@@ -82,7 +82,7 @@ struct Surface_constraints {
   std::unordered_set<std::uint64_t> features;  // feature edges, keys of `edge_key()`
   std::vector<std::array<Index, 3>> triangles; // the surface triangles
   std::vector<Plane_quadric> quadrics;         // per vertex (empty unless asked)
-  std::uint64_t n = 0;                         // the number of vertices (for the keys)
+  std::uint64_t n = 0;                         // a bound on the vertex ids (for the keys)
 
   std::uint64_t edge_key(std::uint64_t a, std::uint64_t b) const { return a < b ? a * n + b : b * n + a; }
   bool is_feature(std::uint64_t a, std::uint64_t b) const { return features.count(edge_key(a, b)) != 0; }
@@ -97,7 +97,7 @@ void compute_surface_constraints(const std::vector<Vec3>& points, const std::vec
                                  ConstrainedVertex constrained_vertex, ConstrainedEdge constrained_edge,
                                  Surface_constraints<Index>& out) {
   const std::size_t nv = points.size();
-  out.n = nv;
+  out.n = std::uint64_t(1) << 32; // (not nv: remeshing adds vertices)
   out.dimension.assign(nv, 3);
   out.features.clear();
   out.triangles.clear();

@@ -53,6 +53,7 @@ public:
     input_pos_ = &input_pos;
     bound_ = bound;
     covered_.assign(input_pos.size(), {});
+    self_covered_.assign(input_pos.size(), 0);
     surface_.clear();
     tree_.clear();
     max_normal_cosine_ =
@@ -66,6 +67,82 @@ public:
   }
 
   bool bounded() const { return bound_ < std::numeric_limits<double>::infinity(); }
+
+  // A vertex made by a split (stable id `covered_.size()`): it stands for no input point.
+  void add_vertex() {
+    covered_.emplace_back();
+    self_covered_.push_back(1);
+  }
+
+  // The point of the input surface nearest to p (p itself without a bound: no surface kept).
+  Vec3 closest_point(const Vec3& p) const {
+    if (!bounded() || surface_.empty()) return p;
+    const K::Point_3 q = tree_.closest_point(point(p));
+    return Vec3{{q.x(), q.y(), q.z()}};
+  }
+
+  // Vertex v (of the surface or a feature curve) is moved to p: its fan and the fans of its surface
+  // neighbours keep the input surface points they stand for within the bound, its new triangles
+  // are near the input surface and make no crease, and on a feature curve the input feature points
+  // stay near the feature edges at v and at its feature neighbours.
+  bool move_ok(Mesh& mesh, Index v, const Vec3& p) {
+    const double tol = error_margin * bound_;
+    if (!(tol < std::numeric_limits<double>::infinity())) return true;
+    const double tol2 = tol * tol;
+    if (tree_.squared_distance(point(p)) > tol2) return false;
+    auto at = [&](Index x) { return point(x == v ? p : mesh.posd[x]); };
+    mesh.gather(mesh.star(v), cells_, labels_);
+    surface_link_(cells_, labels_, v, link_);
+    triangles_.clear();
+    for (const auto& e : link_) triangles_.emplace_back(point(p), at(e.first), at(e.second));
+    if (!near_triangles(mesh.sid[v], tol2)) return false;
+    for (std::size_t s : covered_[mesh.sid[v]])
+      if (!near_triangles(s, tol2)) return false;
+    if (!new_triangles_ok(tol2)) return false;
+    affected_.clear();
+    for (const auto& e : link_)
+      for (Index w : {e.first, e.second})
+        if (!covered_[mesh.sid[w]].empty()) affected_.push_back(w);
+    sort_unique(affected_);
+    for (Index w : affected_) {
+      mesh.gather(mesh.star(w), cells_, labels_);
+      surface_link_(cells_, labels_, w, link_);
+      triangles_.clear();
+      for (const auto& e : link_) triangles_.emplace_back(at(w), at(e.first), at(e.second));
+      for (std::size_t s : covered_[mesh.sid[w]])
+        if (!near_triangles(s, tol2)) return false;
+    }
+    if (mesh.dimension(v) > 1) return true;
+    // The curve: the feature edges at v and at its feature neighbours, v at p.
+    const double ctol2 = 0.0625 * tol2; // a quarter of the tolerance, as for collapses
+    auto near_curve_of = [&](Index x, std::size_t s) {
+      if (s >= input_pos_->size() || mesh.constraints->dimension[s] > 1) return true;
+      const K::Point_3 q = point((*input_pos_)[s]);
+      mesh.neighbors(x, nbr_);
+      for (Index w : nbr_)
+        if (mesh.is_feature(x, w) && CGAL::squared_distance(q, K::Segment_3(at(x), at(w))) <= ctol2)
+          return true;
+      return false;
+    };
+    if (!near_curve_of(v, mesh.sid[v])) return false;
+    for (std::size_t s : covered_[mesh.sid[v]])
+      if (!near_curve_of(v, s)) return false;
+    mesh.neighbors(v, feature_nbr_);
+    for (Index w : feature_nbr_) {
+      if (!mesh.is_feature(v, w)) continue;
+      for (std::size_t s : covered_[mesh.sid[w]])
+        if (!near_curve_of(w, s)) return false;
+    }
+    return true;
+  }
+
+  // Vertex v moved: from now on its own input point is one it stands for.
+  void moved(const Mesh& mesh, Index v) {
+    const std::size_t s = mesh.sid[v];
+    if (!bounded() || self_covered_[s] || mesh.dimension(v) > 2) return;
+    self_covered_[s] = 1;
+    covered_[s].push_back(s);
+  }
 
   // Whether the collapse `c` is to be checked at all: it changes the surface.
   static bool applies(const Mesh& mesh, const Candidate& c) {
@@ -100,7 +177,7 @@ public:
   void merge(const Mesh& mesh, Index r, Index k) {
     if (mesh.dimension(r) > 2 || !bounded()) return;
     std::vector<std::size_t>& cov = covered_[mesh.sid[k]];
-    cov.push_back(mesh.sid[r]);
+    if (!self_covered_[mesh.sid[r]]) cov.push_back(mesh.sid[r]); // (else it is in r's list)
     cov.insert(cov.end(), covered_[mesh.sid[r]].begin(), covered_[mesh.sid[r]].end());
     std::vector<std::size_t>().swap(covered_[mesh.sid[r]]);
   }
@@ -132,6 +209,7 @@ private:
 
   // The input surface point of stable id `s` is within sqrt(tol2) of one of `triangles_`.
   bool near_triangles(std::size_t s, double tol2) const {
+    if (s >= input_pos_->size()) return true; // a vertex made by a split
     const K::Point_3 q = point((*input_pos_)[s]);
     for (const K::Triangle_3& tri : triangles_)
       if (CGAL::squared_distance(q, tri) <= tol2) return true;
@@ -186,7 +264,8 @@ private:
     for (Index w : nbr_)
       if (w != r && mesh.is_feature(k, w)) segments_.emplace_back(point(mesh.posd[k]), point(mesh.posd[w]));
     auto near_curve = [&](std::size_t s) {
-      if (mesh.constraints->dimension[s] > 1) return true; // a surface point: checked above
+      if (s >= input_pos_->size() || mesh.constraints->dimension[s] > 1)
+        return true; // a surface point: checked above
       const K::Point_3 q = point((*input_pos_)[s]);
       for (const K::Segment_3& e : segments_)
         if (CGAL::squared_distance(q, e) <= tol * tol) return true;
@@ -202,6 +281,7 @@ private:
   const std::vector<Vec3>* input_pos_ = nullptr;
   double bound_ = std::numeric_limits<double>::infinity();
   std::vector<std::vector<std::size_t>> covered_; // the input surface points a vertex stands for
+  std::vector<char> self_covered_;                // its own input point is in its list (it moved), or none
   Triangle_list surface_;
   AABB_tree tree_;
   double max_normal_cosine_ = -1; // cosine of half the feature angle (-1: no bound)
@@ -211,7 +291,7 @@ private:
   std::vector<K::Segment_3> segments_;
   std::vector<Tetrahedron> cells_;
   std::vector<int> labels_;
-  std::vector<Index> affected_, nbr_;
+  std::vector<Index> affected_, nbr_, feature_nbr_;
 };
 
 } // namespace internal

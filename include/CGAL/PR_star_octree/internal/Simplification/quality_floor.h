@@ -6,8 +6,9 @@
 #ifndef CGAL_PR_STAR_OCTREE_INTERNAL_SIMPLIFICATION_QUALITY_FLOOR_H
 #define CGAL_PR_STAR_OCTREE_INTERNAL_SIMPLIFICATION_QUALITY_FLOOR_H
 
-// The quality floor of a collapse: what it creates is above the floor, or no worse than what it
-// replaces (the worst tetrahedron, and the number under the floor).
+// The quality floors of a change (a collapse, a flip, a move, a split): what it creates is above
+// the floors, or no worse than what it replaces (the worst tetrahedron by each measure with a
+// floor, and the number under a floor); and the one-number score the optimisation raises.
 
 #include <CGAL/PR_star_octree/internal/Simplification/collapse_candidate.h>
 #include <CGAL/PR_star_octree/tetrahedron_quality.h>
@@ -23,6 +24,72 @@ namespace CGAL {
 namespace PR_star_octree {
 namespace internal {
 
+// The quality of a tetrahedron by the three measures of the floors.
+struct Tetrahedron_shape {
+  double min_dihedral = 0, max_dihedral = 180, radius_ratio = 0;
+
+  static Tetrahedron_shape of(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s) {
+    const auto a = dihedral_angles(p, q, r, s);
+    const auto mm = std::minmax_element(a.begin(), a.end());
+    return Tetrahedron_shape{*mm.first, *mm.second, internal::radius_ratio(p, q, r, s)};
+  }
+  // One number for the optimisation, 1 for the regular tetrahedron and 0 for a flat one: the
+  // worst of the three measures, each scaled to [0, 1] (70.53 degrees and 109.47 degrees from 180
+  // for the dihedral angles of the regular tetrahedron).
+  double score() const {
+    return (std::min)({min_dihedral / 70.5288, (180 - max_dihedral) / 109.4712, radius_ratio});
+  }
+};
+
+// The floors (and the ceiling) on the quality of the tetrahedra a change creates.
+struct Quality_floors {
+  double min_dihedral = 5, max_dihedral = 165, min_radius_ratio = 0.1;
+
+  bool active() const { return min_dihedral > 0 || max_dihedral < 180 || min_radius_ratio > 0; }
+  bool below(const Tetrahedron_shape& q) const {
+    return q.min_dihedral < min_dihedral || q.max_dihedral > max_dihedral ||
+           q.radius_ratio < min_radius_ratio;
+  }
+};
+
+// The worst of some tetrahedra by each measure, and how many are below a floor.
+struct Region_quality {
+  Tetrahedron_shape worst{180, 0, 1};
+  double score = 1;
+  std::size_t below = 0;
+
+  void add(const Tetrahedron_shape& q, const Quality_floors& floors) {
+    worst.min_dihedral = (std::min)(worst.min_dihedral, q.min_dihedral);
+    worst.max_dihedral = (std::max)(worst.max_dihedral, q.max_dihedral);
+    worst.radius_ratio = (std::min)(worst.radius_ratio, q.radius_ratio);
+    score = (std::min)(score, q.score());
+    below += floors.below(q);
+  }
+  // A change from `before` to this is allowed by the floors: nothing below them, or no more
+  // tetrahedra below them and no measure worse where a floor is active.
+  bool allowed_after(const Region_quality& before, const Quality_floors& floors) const {
+    if (below == 0) return true;
+    if (below > before.below) return false;
+    if (floors.min_dihedral > 0 && worst.min_dihedral < before.worst.min_dihedral) return false;
+    if (floors.max_dihedral < 180 && worst.max_dihedral > before.worst.max_dihedral) return false;
+    if (floors.min_radius_ratio > 0 && worst.radius_ratio < before.worst.radius_ratio) return false;
+    return true;
+  }
+};
+
+// The quality of cells of `mesh`, vertex `moved` at `p` (or none: `moved` out of range).
+template <class Mesh, class Cells>
+Region_quality region_quality(const Mesh& mesh, const Cells& cells, typename Mesh::Index moved, const Vec3& p,
+                              const Quality_floors& floors) {
+  Region_quality r;
+  for (const auto& c : cells) {
+    const Vec3* v[4];
+    for (int i = 0; i < 4; ++i) v[i] = c[i] == moved ? &p : &mesh.posd[c[i]];
+    r.add(Tetrahedron_shape::of(*v[0], *v[1], *v[2], *v[3]), floors);
+  }
+  return r;
+}
+
 template <class GeomTraits>
 class Quality_floor_test {
 public:
@@ -30,41 +97,22 @@ public:
   using Index = typename Candidate::Index;
   using Tetrahedron = typename Candidate::Tetrahedron;
 
-  // `floor` 0: no floor.
-  bool operator()(const Round_mesh<GeomTraits>& mesh, const Candidate& c, Quality_measure measure,
-                  double floor) {
-    if (!(floor > 0)) return true;
+  bool operator()(const Round_mesh<GeomTraits>& mesh, const Candidate& c, const Quality_floors& floors) {
+    if (!floors.active()) return true;
     changed_.assign(c.new_cells.begin(), c.new_cells.begin() + static_cast<std::ptrdiff_t>(c.renamed));
     if (c.move)
       changed_.insert(changed_.end(), c.new_cells.begin() + static_cast<std::ptrdiff_t>(c.renamed),
                       c.new_cells.end());
-    const auto after = quality(mesh, changed_, c.k, c.p, measure, floor);
-    if (!(after.first < floor)) return true;
+    const Region_quality after = region_quality(mesh, changed_, c.k, c.p, floors);
+    if (after.below == 0) return true;
     mesh.gather(*c.st_r, old_, old_labels_);
     if (c.move)
       for (Index t : *c.st_k)
         if (!contains(mesh.work[t], c.r)) old_.push_back(mesh.work[t]);
-    const auto before = quality(mesh, old_, c.k, mesh.posd[c.k], measure, floor);
-    return !(after.first < before.first || after.second > before.second);
+    return after.allowed_after(region_quality(mesh, old_, c.k, mesh.posd[c.k], floors), floors);
   }
 
 private:
-  // The quality of the cells (vertex `moved` at `p`): the worst and the number under the floor.
-  static std::pair<double, std::size_t> quality(const Round_mesh<GeomTraits>& mesh,
-                                                const std::vector<Tetrahedron>& cells, Index moved,
-                                                const Vec3& p, Quality_measure measure, double floor) {
-    double worst = std::numeric_limits<double>::infinity();
-    std::size_t bad = 0;
-    for (const Tetrahedron& c : cells) {
-      const Vec3* v[4];
-      for (int i = 0; i < 4; ++i) v[i] = c[i] == moved ? &p : &mesh.posd[c[i]];
-      const double q = tetrahedron_quality(measure, *v[0], *v[1], *v[2], *v[3]);
-      worst = (std::min)(worst, q);
-      bad += q < floor;
-    }
-    return {worst, bad};
-  }
-
   std::vector<Tetrahedron> changed_, old_;
   std::vector<int> old_labels_;
 };

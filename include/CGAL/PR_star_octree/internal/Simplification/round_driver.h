@@ -21,6 +21,7 @@
 #include <CGAL/PR_star_octree/internal/Simplification/compaction.h>
 #include <CGAL/PR_star_octree/internal/Simplification/error_bound.h>
 #include <CGAL/PR_star_octree/internal/Simplification/link_tests.h>
+#include <CGAL/PR_star_octree/internal/Simplification/optimizer.h>
 #include <CGAL/PR_star_octree/internal/Simplification/profiles.h>
 #include <CGAL/PR_star_octree/internal/Simplification/quality_floor.h>
 #include <CGAL/PR_star_octree/internal/Simplification/round_mesh.h>
@@ -52,7 +53,16 @@ public:
 
   Local_simplifier(const Simplification_settings& settings, const Cost& cost, const Placement& placement,
                    const Filter& filter, Visitor& visitor, const GeomTraits& gt)
-      : settings_(settings), cost_(cost), placement_(placement), filter_(filter), visitor_(visitor), gt_(gt) {
+      : settings_(settings), cost_(cost), placement_(placement), filter_(filter), visitor_(visitor),
+        gt_(gt), floors_{settings.min_dihedral, settings.max_dihedral, settings.min_radius_ratio},
+        optimizer_(context_) {
+    context_.mesh = &mesh_;
+    context_.constraints = &constraints_;
+    context_.error = &error_;
+    context_.input_tet = &input_tet_;
+    context_.sizing = &sizing_;
+    context_.floors = floors_;
+    context_.gt = gt_;
   }
 
   // Simplifies the mesh of `tree` (the octree of the input, destroyed on the way); `labels` (input
@@ -64,6 +74,7 @@ public:
            Compact_mesh<GeomTraits>& out) {
     labels_ = &labels;
     stats_ = &stats;
+    context_.stats = &stats.optimization;
     const std::size_t input_tets = tree->number_of_tetrahedra();
     target_ = settings_.target_fraction > 0
                   ? static_cast<std::size_t>(std::ceil(settings_.target_fraction * double(input_tets)))
@@ -73,7 +84,7 @@ public:
     prepare_constraints(*tree, constrained_vertex, constrained_edge);
     bool all_candidates = false; // the round threshold is a length quantile until a round stalls
     stats.stop = Simplification_stop::NOTHING_LEFT;
-    while (removed_ < target_) {
+    while (!target_reached()) {
       if (stats.rounds >= settings_.max_rounds) {
         stats.stop = Simplification_stop::MAX_ROUNDS;
         break;
@@ -99,7 +110,8 @@ public:
       const std::size_t before = removed_;
       stats.blocked_last_round = Simplification_statistics::Blocked();
       visitor_.on_round_started(stats.rounds, tree->number_of_vertices(), tree->number_of_tetrahedra());
-      round(*tree, threshold, out);
+      round(*tree, threshold, out,
+            settings_.optimization_rounds > 0 ? Leaf_work::COLLAPSE_AND_IMPROVE : Leaf_work::COLLAPSE);
       stats.removed_per_round.push_back(removed_ - before);
       visitor_.on_round_finished(stats.rounds, removed_ - before);
       if (removed_ == before) {
@@ -112,8 +124,63 @@ public:
         break;
       }
     }
-    if (removed_ >= target_) stats.stop = Simplification_stop::TARGET_REACHED;
+    if (target_reached()) stats.stop = Simplification_stop::TARGET_REACHED;
     if (stats.rounds == 0) { // nothing done: the input as the octree has it
+      out.points = tree->points();
+      out.tetrahedra.assign(tree->tetrahedra().begin(), tree->tetrahedra().end());
+      for (std::size_t v = 0; v < out.input_vertex.size(); ++v)
+        out.input_vertex[v] = tree->original_vertex(static_cast<Index>(v));
+      for (std::size_t t = 0; t < out.input_tetrahedron.size(); ++t)
+        out.input_tetrahedron[t] = tree->original_tetrahedron(static_cast<Index>(t));
+    }
+    // Rounds of flips and smoothing only, on the octree of the simplified mesh.
+    for (std::size_t i = 0; i < settings_.optimization_rounds; ++i) {
+      if (tree) tree.reset();
+      tree.emplace(make_input(out.points, out.tetrahedra),
+                   parameters::bucket_size(settings_.bucket_size).geom_traits(gt_));
+      ++stats.optimization.rounds;
+      round(*tree, 0, out, Leaf_work::IMPROVE);
+    }
+  }
+
+  // Remeshes the mesh of `tree` (as `run()`) towards the target edge lengths `sizing` (input
+  // numbering): rounds of splits, collapses, flips and smoothing leaf by leaf.
+  template <class ConstrainedVertex, class ConstrainedEdge>
+  void run_remesh(std::optional<Octree>& tree, const std::vector<int>& labels, std::vector<double> sizing,
+                  ConstrainedVertex constrained_vertex, ConstrainedEdge constrained_edge,
+                  Simplification_statistics& stats, Compact_mesh<GeomTraits>& out) {
+    labels_ = &labels;
+    stats_ = &stats;
+    context_.stats = &stats.optimization;
+    target_ = (std::numeric_limits<std::size_t>::max)();
+    removed_ = 0;
+    start_from(*tree, out);
+    prepare_constraints(*tree, constrained_vertex, constrained_edge);
+    sizing_.resize(sizing.size()); // by stable id: the index in the first round's octree
+    for (std::size_t v = 0; v < sizing.size(); ++v)
+      sizing_[v] = sizing[tree->original_vertex(static_cast<Index>(v))];
+    stats.stop = Simplification_stop::NOTHING_LEFT;
+    for (std::size_t i = 0; i < settings_.remesh_iterations; ++i) {
+      if (i > 0) {
+        tree.reset();
+        tree.emplace(make_input(out.points, out.tetrahedra),
+                     parameters::bucket_size(settings_.bucket_size).geom_traits(gt_));
+      }
+      ++stats.rounds;
+      const auto& o = stats.optimization;
+      const std::size_t changes_before = stats.collapses + o.splits + o.vertex_moves + o.flips_2_3 +
+                                         o.flips_3_2 + o.flips_4_4 + o.edge_removals;
+      const std::size_t removed_before = removed_;
+      stats.blocked_last_round = Simplification_statistics::Blocked();
+      round(*tree, 0, out, Leaf_work::REMESH);
+      stats.removed_per_round.push_back(removed_ - removed_before);
+      if (stats.collapses + o.splits + o.vertex_moves + o.flips_2_3 + o.flips_3_2 + o.flips_4_4 +
+              o.edge_removals ==
+          changes_before)
+        break;
+      if (i + 1 == settings_.remesh_iterations) stats.stop = Simplification_stop::MAX_ROUNDS;
+    }
+    if (stats.rounds == 0) { // no iteration asked: the input as the octree has it
       out.points = tree->points();
       out.tetrahedra.assign(tree->tetrahedra().begin(), tree->tetrahedra().end());
       for (std::size_t v = 0; v < out.input_vertex.size(); ++v)
@@ -124,14 +191,21 @@ public:
   }
 
   // The package's own tests, for the filter (see `Collapse_profile`).
-  bool quality_ok(const Candidate& c) {
-    return quality_(mesh_, c, settings_.quality_measure, settings_.quality_floor);
-  }
+  bool quality_ok(const Candidate& c) { return quality_(mesh_, c, floors_); }
   bool error_ok(const Candidate& c) {
     return !Error_bound<GeomTraits>::applies(mesh_, c) || error_(mesh_, c);
   }
 
 private:
+  // What a leaf does in a round.
+  enum class Leaf_work { COLLAPSE, COLLAPSE_AND_IMPROVE, IMPROVE, REMESH };
+
+  // The target is met, counting the tetrahedra flips added or removed.
+  bool target_reached() const {
+    if (target_ == (std::numeric_limits<std::size_t>::max)()) return false; // no target
+    return static_cast<long long>(removed_) - context_.change >= static_cast<long long>(target_);
+  }
+
   // The numbering of the input octree as a compact mesh without arrays (the first round uses it).
   void start_from(const Octree& tree, Compact_mesh<GeomTraits>& out) {
     const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
@@ -213,22 +287,41 @@ private:
     mesh_.deleted_vertex.assign(nv, 0);
   }
 
-  void round(const Octree& tree, double threshold, Compact_mesh<GeomTraits>& out) {
+  void round(const Octree& tree, double threshold, Compact_mesh<GeomTraits>& out, Leaf_work work) {
     threshold_ = threshold;
     load_round(tree, out);
-    // The leaves one after the other (each collapse changes the mesh the next leaves see), until
+    // The leaves one after the other (each change changes the mesh the next leaves see), until
     // the target is reached.
     Leaf_executor<CGAL::Sequential_tag>().for_each(
-        tree, VERTEX_TETRAHEDRA, 0, [&](int, const Leaf_topology<Octree>& local) { simplify_leaf(local); },
-        internal::No_progress(), [&] { return removed_ >= target_; });
+        tree, VERTEX_TETRAHEDRA, 0,
+        [&](int, const Leaf_topology<Octree>& local) {
+          mesh_.enter_leaf(local);
+          switch (work) {
+          case Leaf_work::COLLAPSE:
+            simplify_leaf();
+            break;
+          case Leaf_work::COLLAPSE_AND_IMPROVE:
+            simplify_leaf();
+            optimizer_.optimize_leaf(false);
+            break;
+          case Leaf_work::IMPROVE:
+            optimizer_.optimize_leaf(false);
+            break;
+          case Leaf_work::REMESH:
+            optimizer_.split_long_edges();
+            simplify_leaf();
+            optimizer_.optimize_leaf(true);
+            break;
+          }
+        },
+        internal::No_progress(), [&] { return work != Leaf_work::IMPROVE && target_reached(); });
     queue_.clear();
     mesh_.end_round();
     compact(mesh_, input_tet_, out);
   }
 
-  // The collapses of one leaf of the round's octree.
-  void simplify_leaf(const Leaf_topology<Octree>& local) {
-    mesh_.enter_leaf(local);
+  // The collapses of the leaf of the round's octree the mesh is in.
+  void simplify_leaf() {
     // Candidate edges: at least one end in the leaf, short enough.
     queue_.clear();
     for (Index v = mesh_.vb; v < mesh_.ve; ++v) {
@@ -236,7 +329,7 @@ private:
       for (Index w : nbr_)
         if ((w > v || !mesh_.in_leaf(w)) && short_enough(v, w)) push(v, w);
     }
-    while (!queue_.empty() && removed_ < target_) {
+    while (!queue_.empty() && !target_reached()) {
       const auto e = queue_.pop();
       if (mesh_.deleted_vertex[e.a] || mesh_.deleted_vertex[e.b]) continue;
       if (cost(e.a, e.b) != e.cost) { // the neighbourhood changed the cost: queue it again
@@ -248,6 +341,7 @@ private:
   }
 
   bool short_enough(Index a, Index b) const {
+    if (settings_.remesh) return optimizer_.relative_length(a, b) < 0.8;
     if (!(threshold_ < std::numeric_limits<double>::infinity())) return true;
     return CGAL::to_double(gt_.compute_squared_distance_3_object()(mesh_.pos[a], mesh_.pos[b])) <
            threshold_ * threshold_;
@@ -296,6 +390,17 @@ private:
     refused(edge, first);
   }
 
+  // Remeshing: the collapse would make an edge longer than 4/3 of its target.
+  bool creates_long_edge(const Candidate& c) {
+    mesh_.neighbors(c.r, long_nbr_);
+    for (Index w : long_nbr_) {
+      if (w == c.k) continue;
+      const double h = 0.5 * (sizing_[mesh_.sid[c.k]] + sizing_[mesh_.sid[w]]);
+      if (norm(minus(c.p, mesh_.posd[w])) > 4. / 3 * h) return true;
+    }
+    return false;
+  }
+
   void refused(const Edge_profile<GeomTraits>& edge, Collapse_refusal why) {
     count_refusal(why, stats_->blocked);
     count_refusal(why, stats_->blocked_last_round);
@@ -323,6 +428,7 @@ private:
     if (!c.positive(gt_, mesh_)) return Refusal{Collapse_refusal::FLIP};
     // Topology: the link condition of the volume (boundary coned), of the surface and of the curves.
     if (!links_(mesh_, *c.st_r, *c.st_k, c.st_e, r, k, c.dr)) return Refusal{Collapse_refusal::LINK};
+    if (settings_.remesh && creates_long_edge(c)) return Refusal{Collapse_refusal::QUALITY};
     const Profile profile(mesh_, gt_, c, *this);
     const Collapse_refusal filtered = filter_(profile);
     if (filtered != Collapse_refusal::NONE) return Refusal{filtered};
@@ -363,6 +469,7 @@ private:
     if (c.move) {
       mesh_.pos[k] = c.pk;
       mesh_.posd[k] = c.p;
+      error_.moved(mesh_, k);
     }
     if (!constraints_.quadrics.empty())
       constraints_.quadrics[mesh_.sid[k]] += constraints_.quadrics[mesh_.sid[r]];
@@ -398,6 +505,11 @@ private:
   Strata_test<Index> strata_;
   Link_tests<GeomTraits, Index> links_;
   Quality_floor_test<GeomTraits> quality_;
+  Quality_floors floors_;
+  std::vector<double> sizing_; // remeshing: the target edge length by stable id
+  std::vector<Index> long_nbr_;
+  typename Local_optimizer<GeomTraits>::Context context_;
+  Local_optimizer<GeomTraits> optimizer_;
 };
 
 } // namespace internal

@@ -80,7 +80,8 @@ struct Round_mesh {
     outside_.clear();
   }
 
-  // The current star of v, in the leaf or not (then from the leaf that holds it, cached).
+  // The current star of v, in the leaf or not (then from the leaf that holds it, cached; a vertex
+  // made in this round has its whole star in `extras_`).
   std::vector<Index>& star(Index v) {
     if (in_leaf(v)) {
       std::vector<Index>& s = stars_[v - vb];
@@ -93,8 +94,9 @@ struct Round_mesh {
       return found->second;
     }
     std::vector<Index>& s = outside_[v];
-    for (Index t : tree->leaf_tetrahedra(tree->leaf_of_vertex(v)))
-      if (!deleted_tet[t] && contains(work[t], v)) s.push_back(t);
+    if (std::size_t(v) < tree->number_of_vertices())
+      for (Index t : tree->leaf_tetrahedra(tree->leaf_of_vertex(v)))
+        if (!deleted_tet[t] && contains(work[t], v)) s.push_back(t);
     auto it = extras_.find(v);
     if (it != extras_.end()) // (a tetrahedron renamed into v may also be in the list of v's leaf)
       for (Index t : it->second)
@@ -107,6 +109,37 @@ struct Round_mesh {
 
   // Tetrahedron t was renamed into v: remembered for v's star in later leaves.
   void add_to_star(Index v, Index t) { extras_[v].push_back(t); }
+
+  // A new vertex (a split), of stable id `stable` (the constraints know it), standing for the
+  // point data of input vertex `input`.
+  Index add_vertex(const Point_3& p, const Vec3& pd, std::size_t stable, std::size_t input,
+                   Vertex_type type) {
+    pos.push_back(p);
+    posd.push_back(pd);
+    sid.push_back(stable);
+    input_vertex.push_back(input);
+    types.push_back(type);
+    deleted_vertex.push_back(0);
+    return static_cast<Index>(pos.size() - 1);
+  }
+
+  // A new tetrahedron (a split or a flip), in the stars of its vertices, now and in later leaves.
+  Index add_tetrahedron(const Tetrahedron& c, int lab) {
+    const Index t = static_cast<Index>(work.size());
+    work.push_back(c);
+    label.push_back(lab);
+    deleted_tet.push_back(0);
+    for (Index v : c) {
+      extras_[v].push_back(t);
+      if (in_leaf(v)) {
+        stars_[v - vb].push_back(t);
+        continue;
+      }
+      auto found = outside_.find(v);
+      if (found != outside_.end()) found->second.push_back(t);
+    }
+    return t;
+  }
 
   // The cells and labels of the tetrahedra `st`.
   void gather(const std::vector<Index>& st, std::vector<Tetrahedron>& cells, std::vector<int>& labels) const {

@@ -25,8 +25,12 @@ struct Simplification_settings {
   double max_edge_length = std::numeric_limits<double>::infinity();
   std::size_t bucket_size = 50;
   std::size_t max_rounds = 1000;
-  Quality_measure quality_measure = Quality_measure::MIN_DIHEDRAL_ANGLE;
-  double quality_floor = 5;                                            // 0: no floor
+  double min_dihedral = 5;             // degrees; 0: no floor
+  double max_dihedral = 165;           // degrees; 180: no ceiling
+  double min_radius_ratio = 0.1;       // 0: no floor
+  std::size_t optimization_rounds = 2; // optimisation-only rounds after the collapses; 0: no optimisation
+  bool remesh = false;                 // remesh() (splits, collapses to the sizing, flips, smoothing)
+  std::size_t remesh_iterations = 5;
   double feature_angle = 40;                                           // degrees; >= 180: no sharp edges
   double max_boundary_error = std::numeric_limits<double>::infinity(); // absolute
   bool with_quadrics = false; // the plane quadrics of the surface are computed (quadric cost or placement)
