@@ -81,7 +81,9 @@ enum class Collapse_refusal {
 /// What a run of `simplify()` did.
 struct Simplification_statistics {
   std::size_t input_vertices = 0, output_vertices = 0;
-  std::size_t input_tetrahedra = 0, output_tetrahedra = 0, removed_tetrahedra = 0;
+  std::size_t input_tetrahedra = 0, output_tetrahedra = 0;
+  std::size_t removed_tetrahedra =
+      0; ///< tetrahedra deleted by the collapses (see `Optimization` for the others)
   std::size_t collapses = 0;
   std::size_t rounds = 0;                     ///< rounds of (local simplification, compaction, rebuild)
   std::vector<std::size_t> removed_per_round; ///< tetrahedra removed by each round
@@ -115,6 +117,9 @@ struct Simplification_statistics {
     std::size_t edge_removals = 0; ///< edges in five to seven tetrahedra removed (2n - 4 new tetrahedra)
     std::size_t splits = 0;        ///< edges split at their midpoint (`remesh()`)
     std::size_t rounds = 0;        ///< rounds of optimisation only (no collapse), after the simplification
+    /// tetrahedra made and deleted by the flips and splits (the collapses delete `removed_tetrahedra`:
+    /// the output has `input_tetrahedra - removed_tetrahedra + tetrahedra_added - tetrahedra_deleted`)
+    std::size_t tetrahedra_added = 0, tetrahedra_deleted = 0;
     Blocked refused_moves, refused_flips, refused_splits; ///< the moves, flips and splits not made
   } optimization;
   Simplification_stop stop = Simplification_stop::NOTHING_LEFT; ///< why it stopped

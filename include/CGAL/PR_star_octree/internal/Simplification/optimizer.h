@@ -74,7 +74,7 @@ public:
       if (mesh.deleted_vertex[v]) continue;
       for (Index t : mesh.star(v)) {
         const double s = score(mesh.work[t]);
-        if (s < bad_score || (all && s < 0.5)) bad_.emplace_back(s, t);
+        if (s < bad_score) bad_.emplace_back(s, t);
       }
     }
     std::sort(bad_.begin(), bad_.end());
@@ -241,18 +241,48 @@ private:
         return Collapse_refusal::BOUNDARY;
     }
     const double before = region(st_e_).score;
-    // Existing edges between ring vertices that are not consecutive: no new edge may be one.
+    // The best triangulation, first with any diagonal; the existing edges between ring vertices
+    // (no new edge may be one) are looked for only when it would be better.
     exists_.assign(n * n, 0);
+    triangulate(a, b, n);
+    if (!(best_[n - 1] > before)) return Collapse_refusal::QUALITY;
+    bool any = false;
     for (std::size_t i = 0; i < n; ++i) {
       mesh.neighbors(ring_[i], tmp_);
       for (std::size_t k = 0; k < n; ++k)
-        if (k != i && std::binary_search(tmp_.begin(), tmp_.end(), ring_[k])) exists_[i * n + k] = 1;
+        if (k != i && (k + 1) % n != i && (i + 1) % n != k &&
+            std::binary_search(tmp_.begin(), tmp_.end(), ring_[k])) {
+          exists_[i * n + k] = 1;
+          any = true;
+        }
     }
+    if (any) triangulate(a, b, n);
+    if (!(best_[n - 1] >= 0)) return Collapse_refusal::LINK;
+    if (!(best_[n - 1] > before)) return Collapse_refusal::QUALITY;
+    plan.old = st_e_;
+    plan.cells.clear();
+    std::vector<std::pair<std::size_t, std::size_t>> todo{{0, n - 1}};
+    while (!todo.empty()) {
+      const auto ij = todo.back();
+      todo.pop_back();
+      if (ij.second - ij.first < 2) continue;
+      const std::size_t k = apex_[ij.first * n + ij.second];
+      plan.cells.push_back(Tetrahedron{{ring_[ij.first], ring_[k], ring_[ij.second], b}});
+      plan.cells.push_back(Tetrahedron{{ring_[ij.first], ring_[ij.second], ring_[k], a}});
+      todo.push_back({ij.first, k});
+      todo.push_back({k, ij.second});
+    }
+    plan.kind = n == 3 ? 3 : n == 4 ? 4 : 5;
+    return finish(plan, before);
+  }
+
+  // best_[i n + j]: the best worst score of the triangulations of the polygon r_i..r_j of the ring
+  // of the edge (a, b) (i < j; -1: none, every one using an existing edge), its apex in apex_.
+  void triangulate(Index a, Index b, std::size_t n) {
     auto diagonal_ok = [&](std::size_t i, std::size_t k) {
       const bool side = k == i + 1 || (i == 0 && k == n - 1);
       return side || !exists_[i * n + k];
     };
-    // best[i][j]: the best worst score of the polygon r_i..r_j (i < j), its apex in `apex`.
     best_.assign(n * n, std::numeric_limits<double>::infinity());
     apex_.assign(n * n, 0);
     for (std::size_t len = 2; len < n; ++len)
@@ -274,22 +304,6 @@ private:
         best_[i * n + j] = value;
         apex_[i * n + j] = arg;
       }
-    if (!(best_[n - 1] > before)) return Collapse_refusal::QUALITY;
-    plan.old = st_e_;
-    plan.cells.clear();
-    std::vector<std::pair<std::size_t, std::size_t>> todo{{0, n - 1}};
-    while (!todo.empty()) {
-      const auto ij = todo.back();
-      todo.pop_back();
-      if (ij.second - ij.first < 2) continue;
-      const std::size_t k = apex_[ij.first * n + ij.second];
-      plan.cells.push_back(Tetrahedron{{ring_[ij.first], ring_[k], ring_[ij.second], b}});
-      plan.cells.push_back(Tetrahedron{{ring_[ij.first], ring_[ij.second], ring_[k], a}});
-      todo.push_back({ij.first, k});
-      todo.push_back({k, ij.second});
-    }
-    plan.kind = n == 3 ? 3 : n == 4 ? 4 : 5;
-    return finish(plan, before);
   }
 
   // The 2-3 flip of the face of t opposite its vertex `i`, shared with another tetrahedron of the
@@ -353,6 +367,8 @@ private:
     }
     c_.change += static_cast<long long>(plan.cells.size()) - static_cast<long long>(plan.old.size());
     Stats& s = *c_.stats;
+    s.tetrahedra_added += plan.cells.size();
+    s.tetrahedra_deleted += plan.old.size();
     (plan.kind == 2   ? s.flips_2_3
      : plan.kind == 3 ? s.flips_3_2
      : plan.kind == 4 ? s.flips_4_4
@@ -537,6 +553,8 @@ private:
       }
     }
     c_.change += static_cast<long long>(st_e_.size());
+    c_.stats->tetrahedra_added += 2 * st_e_.size();
+    c_.stats->tetrahedra_deleted += st_e_.size();
     ++c_.stats->splits;
     return m;
   }

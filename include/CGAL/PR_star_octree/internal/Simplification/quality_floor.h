@@ -28,10 +28,39 @@ namespace internal {
 struct Tetrahedron_shape {
   double min_dihedral = 0, max_dihedral = 180, radius_ratio = 0;
 
+  // From the outward face normals: the dihedral angle at the edge of faces k and l has the cosine
+  // -n_k.n_l / (|n_k| |n_l|), so two arc cosines give both extremes (the optimisation evaluates
+  // this millions of times); the radius ratio reuses the face areas.
   static Tetrahedron_shape of(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s) {
-    const auto a = dihedral_angles(p, q, r, s);
-    const auto mm = std::minmax_element(a.begin(), a.end());
-    return Tetrahedron_shape{*mm.first, *mm.second, internal::radius_ratio(p, q, r, s)};
+    const Vec3* P[4] = {&p, &q, &r, &s};
+    Vec3 n[4];
+    double len[4];
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 &a = *P[k == 0 ? 1 : 0], &b = *P[k <= 1 ? 2 : 1], &c = *P[k <= 2 ? 3 : 2];
+      n[k] = cross(minus(b, a), minus(c, a));
+      if (dot(n[k], minus(*P[k], a)) > 0) n[k] = Vec3{{-n[k][0], -n[k][1], -n[k][2]}};
+      len[k] = norm(n[k]);
+    }
+    const Vec3 a = minus(q, p), b = minus(r, p), c = minus(s, p);
+    const double six_volume = std::abs(dot(a, cross(b, c)));
+    if (!(six_volume > 0) || !(len[0] * len[1] * len[2] * len[3] > 0)) return Tetrahedron_shape{0, 180, 0};
+    double lo = 1, hi = -1;
+    for (int k = 0; k < 4; ++k)
+      for (int l = k + 1; l < 4; ++l) {
+        const double cs = -dot(n[k], n[l]) / (len[k] * len[l]);
+        lo = (std::min)(lo, cs);
+        hi = (std::max)(hi, cs);
+      }
+    constexpr double degrees = 180. / 3.14159265358979323846;
+    auto angle = [&](double cs) { return std::acos((std::max)(-1., (std::min)(1., cs))) * degrees; };
+    // Radius ratio 3 r / R: r = 3V / A, R from the circumcentre relative to p.
+    const double inradius = six_volume / (len[0] + len[1] + len[2] + len[3]);
+    const Vec3 bc = cross(b, c), ca = cross(c, a), ab = cross(a, b);
+    const double la = dot(a, a), lb = dot(b, b), lc = dot(c, c);
+    const Vec3 o{{la * bc[0] + lb * ca[0] + lc * ab[0], la * bc[1] + lb * ca[1] + lc * ab[1],
+                  la * bc[2] + lb * ca[2] + lc * ab[2]}};
+    const double circumradius = norm(o) / (2 * six_volume);
+    return Tetrahedron_shape{angle(hi), angle(lo), (std::min)(1., 3 * inradius / circumradius)};
   }
   // One number for the optimisation, 1 for the regular tetrahedron and 0 for a flat one: the
   // worst of the three measures, each scaled to [0, 1] (70.53 degrees and 109.47 degrees from 180
