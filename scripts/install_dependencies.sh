@@ -8,6 +8,10 @@
 #                                                 scripts/setup.sh installs
 #   scripts/install_dependencies.sh --python      what building needs, plus the Python module's
 #                                                 (pybind11, the Python headers, numpy)
+#   scripts/install_dependencies.sh --benchmarks  what building needs, plus what the remeshing
+#                                                 benchmark's data and picture need (TetGen, gmsh,
+#                                                 CGAL's data set, matplotlib; see
+#                                                 benchmark/PR_star_octree/make_remesh_data.sh)
 set -euo pipefail
 # Building: the compiler, CMake, CGAL and its dependencies, Eigen (distortion), TBB (parallel
 # leaves), TetGen (prstar generate --tetgen), zlib, lz4, lzma (compressed VTU).
@@ -26,8 +30,9 @@ test_only=(doxygen python3-vtk9 python3-meshio gmsh xvfb libopenmpi-dev openmpi-
 case "${1:-}" in
   --build-only) packages=("${build[@]}") ;;
   --python) packages=("${build[@]}" pybind11-dev python3-dev python3-numpy) ;;
+  --benchmarks) packages=("${build[@]}" tetgen gmsh libcgal-demo python3-matplotlib) ;;
   "") packages=("${build[@]}" "${test_only[@]}") ;;
-  *) echo "install_dependencies.sh: unknown option $1 (--build-only, --python, or nothing for everything)" >&2; exit 2 ;;
+  *) echo "install_dependencies.sh: unknown option $1 (--build-only, --python, --benchmarks, or nothing for everything)" >&2; exit 2 ;;
 esac
 missing=()
 for p in "${packages[@]}"; do
