@@ -417,6 +417,31 @@ private:
       for (Index w : nbr_)
         for (int i = 0; i < 3; ++i) centroid[i] += mesh.posd[w][i] / double(nbr_.size());
       targets_.push_back(centroid);
+      // Sliver perturbation: away from the face opposite v in its worst tetrahedron, by a quarter
+      // of that tetrahedron's mean edge length (a sliver's four vertices are nearly coplanar).
+      const Tetrahedron* worst = nullptr;
+      double worst_score = bad_score;
+      for (const Tetrahedron& c : cells_) {
+        const double sc = score(c);
+        if (sc < worst_score) {
+          worst_score = sc;
+          worst = &c;
+        }
+      }
+      if (worst != nullptr) {
+        const Vec3* f[3];
+        int k = 0;
+        for (Index w : *worst)
+          if (w != v) f[k++] = &mesh.posd[w];
+        Vec3 n = cross(minus(*f[1], *f[0]), minus(*f[2], *f[0]));
+        if (dot(n, minus(x, *f[0])) < 0) n = Vec3{{-n[0], -n[1], -n[2]}};
+        const double ln = norm(n);
+        double mean = 0;
+        for (int i = 0; i < 3; ++i) mean += (norm(minus(*f[i], x)) + norm(minus(*f[(i + 1) % 3], *f[i]))) / 6;
+        if (ln > 0)
+          targets_.push_back(Vec3{{x[0] + 0.25 * mean * n[0] / ln, x[1] + 0.25 * mean * n[1] / ln,
+                                   x[2] + 0.25 * mean * n[2] / ln}});
+      }
     } else if (dim == 2) {
       mesh.gather(star_, cells_, labels_);
       surface_link_(cells_, labels_, v, link_);
