@@ -295,7 +295,7 @@ check(len(table) == 3 and all(len(l.split()) >= 8 for l in table), "curvature ta
 
 # ---------------------------------------------------------------------------------------------
 # Messages and exit statuses, in every command
-commands = ["demo", "info", "convert", "stats", "boundary", "curvature", "validate", "simplify", "generate"]
+commands = ["demo", "info", "convert", "stats", "boundary", "curvature", "validate", "simplify", "remesh", "generate"]
 for c in commands:
     r = prstar(c, "--frob", expect=2)
     check(r.stderr == "prstar %s: unknown option --frob\nsee 'prstar %s --help'\n" % (c, c), c + ": " + r.stderr)

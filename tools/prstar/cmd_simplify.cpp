@@ -5,20 +5,17 @@
 
 #include "commands.h"
 
-#include <CGAL/PR_star_octree/parameters.h>
+#include "simplification_cli.h"
+
 #include <CGAL/PR_star_octree/mesh_quality.h>
-#include <CGAL/bounding_box.h>
+#include <CGAL/PR_star_octree/parameters.h>
 #include <CGAL/PR_star_octree/simplification.h>
 
-#include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <string>
-#include <utility>
-#include <vector>
-
 #include <iostream>
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace prstar {
 
@@ -31,10 +28,8 @@ namespace PSO = CGAL::PR_star_octree;
 // not name the options).
 struct Simplify_settings {
   double target_fraction = 0, max_edge_length = std::numeric_limits<double>::infinity();
-  PSO::Quality_measure measure = PSO::Quality_measure::MIN_DIHEDRAL_ANGLE;
-  double floor = 5, feature_angle = 40;
-  double max_error = 0.2; // in percent of the diagonal when `error_relative`
-  bool error_relative = true;
+  Mesh_guards guards;
+  std::size_t optimization_rounds = 2;
   PSO::Collapse_priority priority = PSO::Collapse_priority::EDGE_LENGTH;
   PSO::Collapse_placement placement = PSO::Collapse_placement::HALF_EDGE;
 };
@@ -51,34 +46,11 @@ Simplify_settings simplify_settings(const Options& o) {
     throw Usage_error("--keep must be a fraction of the tetrahedra in (0, 1), e.g. 0.25 or 25%");
   s.max_edge_length = o.get_double("--max-length", std::numeric_limits<double>::infinity());
   if (!(s.max_edge_length > 0)) throw Usage_error("--max-length must be positive");
-  if (o.has("--min-dihedral") && o.has("--min-radius-ratio"))
-    throw Usage_error("give one quality floor: --min-dihedral or --min-radius-ratio");
-  if (o.has("--min-radius-ratio")) {
-    s.measure = PSO::Quality_measure::RADIUS_RATIO;
-    s.floor = o.get_double("--min-radius-ratio", 0.1);
-    if (!(s.floor >= 0 && s.floor <= 1))
-      throw Usage_error("--min-radius-ratio must be in [0, 1] (0: no floor)");
-  } else {
-    s.floor = o.get_double("--min-dihedral", 5);
-    if (!(s.floor >= 0 && s.floor <= 70.5))
-      throw Usage_error("--min-dihedral must be in [0, 70.5] degrees (0: no floor)");
-  }
-  s.feature_angle = o.get_double("--feature-angle", 40);
-  if (!(s.feature_angle >= 0 && s.feature_angle <= 180))
-    throw Usage_error("--feature-angle must be in [0, 180] degrees (180: no sharp edges)");
-  const std::string e = o.get("--max-error", "0.2%");
-  if (e == "none" || e == "inf") {
-    s.error_relative = false;
-    s.max_error = std::numeric_limits<double>::infinity();
-  } else {
-    s.error_relative = !e.empty() && e.back() == '%';
-    const std::string number = s.error_relative ? e.substr(0, e.size() - 1) : e;
-    char* end = nullptr;
-    s.max_error = std::strtod(number.c_str(), &end);
-    if (number.empty() || *end != '\0' || !(s.max_error >= 0) || !std::isfinite(s.max_error))
-      throw Usage_error(
-          "--max-error must be a distance, a percentage of the bounding-box diagonal (0.2%) or none");
-  }
+  s.guards = guard_settings(o);
+  const double rounds = o.get_double("--optimize", 2);
+  if (!(rounds >= 0 && rounds <= 1000 && rounds == std::floor(rounds)))
+    throw Usage_error("--optimize must be an integer in [0, 1000] (0: coarsen only)");
+  s.optimization_rounds = static_cast<std::size_t>(rounds);
   const std::string priority = o.get("--priority", "length");
   if (priority == "quadric")
     s.priority = PSO::Collapse_priority::QUADRIC_ERROR;
@@ -92,29 +64,6 @@ Simplify_settings simplify_settings(const Options& o) {
   return s;
 }
 
-// The reasons of a Blocked record, named as in the JSON, largest first.
-std::vector<std::pair<std::string, std::size_t>> reasons(const PSO::Simplification_statistics::Blocked& b) {
-  std::vector<std::pair<std::string, std::size_t>> r{{"different_leaves", b.different_leaves},
-                                                     {"feature", b.feature},
-                                                     {"boundary", b.boundary},
-                                                     {"flip", b.flip},
-                                                     {"link", b.link},
-                                                     {"quality", b.quality},
-                                                     {"error", b.error}};
-  std::stable_sort(r.begin(), r.end(), [](const auto& x, const auto& y) { return x.second > y.second; });
-  return r;
-}
-
-void json_quality(Json& j, const char* key, const PSO::Mesh_quality& q) {
-  j.key(key).begin_object();
-  j.field("min_dihedral", q.min_dihedral_angle)
-      .field("max_dihedral", q.max_dihedral_angle)
-      .field("min_radius_ratio", q.min_radius_ratio)
-      .field("share_under_5", q.share_under_5())
-      .field("share_under_10", q.share_under_10());
-  j.end_object();
-}
-
 int run_simplify(const Options& o) {
   const std::string& input = o.input();
   const std::string out = o.output();
@@ -122,19 +71,16 @@ int run_simplify(const Options& o) {
   const Simplify_settings settings = simplify_settings(o);
   Progress_bar progress(o.show_progress());
   const Mesh mesh = read_mesh(input, progress);
-  double error_bound = settings.max_error;
-  if (settings.error_relative) {
-    const CGAL::Bbox_3 box = CGAL::bbox_3(mesh.points.begin(), mesh.points.end());
-    const double dx = box.xmax() - box.xmin(), dy = box.ymax() - box.ymin(), dz = box.zmax() - box.zmin();
-    error_bound = settings.max_error / 100 * std::sqrt(dx * dx + dy * dy + dz * dz);
-  }
+  const double error_bound = absolute_error_bound(settings.guards, bounding_box_diagonal(mesh.points));
   progress.phase("simplifying (k_v = " + bucket_size_string(kv) + ")");
   const auto res = PSO::simplify(mesh, params::target_fraction(settings.target_fraction)
                                            .max_edge_length(settings.max_edge_length)
                                            .bucket_size(kv)
-                                           .quality_measure(settings.measure)
-                                           .quality_floor(settings.floor)
-                                           .feature_angle(settings.feature_angle)
+                                           .min_dihedral_angle(settings.guards.min_dihedral)
+                                           .max_dihedral_angle(settings.guards.max_dihedral)
+                                           .min_radius_ratio(settings.guards.min_radius_ratio)
+                                           .optimization_rounds(settings.optimization_rounds)
+                                           .feature_angle(settings.guards.feature_angle)
                                            .max_boundary_error(error_bound)
                                            .collapse_priority(settings.priority)
                                            .collapse_placement(settings.placement));
@@ -149,12 +95,13 @@ int run_simplify(const Options& o) {
       PSO::boundary_distance(mesh.points, mesh.tetrahedra, res.mesh.points, res.mesh.tetrahedra, 0.);
   progress.finish();
   const auto& s = res.statistics;
+  const auto& opt = s.optimization;
   const bool short_of_target =
       s.stop == PSO::Simplification_stop::BLOCKED || s.stop == PSO::Simplification_stop::MAX_ROUNDS;
   const double removed_percent =
       s.input_tetrahedra ? 100. * double(s.removed_tetrahedra) / double(s.input_tetrahedra) : 0.;
   if (short_of_target) {
-    const auto why = reasons(s.blocked_last_round);
+    const auto why = blocked_reasons(s.blocked_last_round);
     std::cerr << "prstar simplify: stopped before the target: removed " << fixed(removed_percent, 1)
               << "% of the tetrahedra, target " << fixed(100 * settings.target_fraction, 1) << "%; ";
     if (s.stop == PSO::Simplification_stop::MAX_ROUNDS)
@@ -165,17 +112,6 @@ int run_simplify(const Options& o) {
     std::cerr << "; wrote the last valid mesh to " << out << '\n';
   }
   const int status = short_of_target ? exit_target_not_reached : exit_success;
-  auto blocked = [](Json& j, const char* key, const PSO::Simplification_statistics::Blocked& b) {
-    j.key(key).begin_object();
-    j.field("different_leaves", b.different_leaves)
-        .field("feature", b.feature)
-        .field("boundary", b.boundary)
-        .field("flip", b.flip)
-        .field("link", b.link)
-        .field("quality", b.quality)
-        .field("error", b.error);
-    j.end_object();
-  };
   if (o.json()) {
     Json j;
     j.begin_object()
@@ -187,8 +123,14 @@ int run_simplify(const Options& o) {
         .key("kv");
     json_kv(j, kv).field("rounds", s.rounds).field("max_queue", s.max_queue_size).field("seconds", s.seconds);
     j.field("stop", PSO::simplification_stop_name(s.stop));
-    blocked(j, "blocked", s.blocked);
-    blocked(j, "blocked_last_round", s.blocked_last_round);
+    json_blocked(j, "blocked", s.blocked);
+    json_blocked(j, "blocked_last_round", s.blocked_last_round);
+    j.key("optimization").begin_object();
+    json_operation_counts(j, opt).field("rounds", opt.rounds);
+    json_blocked(j, "refused_moves", opt.refused_moves);
+    json_blocked(j, "refused_flips", opt.refused_flips);
+    json_blocked(j, "refused_splits", opt.refused_splits);
+    j.end_object();
     json_quality(j, "input_quality", q_in);
     json_quality(j, "output_quality", q_out);
     j.key("boundary_error").begin_object();
@@ -206,25 +148,35 @@ int run_simplify(const Options& o) {
   t.add({"tetrahedra", std::to_string(s.input_tetrahedra),
          std::to_string(s.output_tetrahedra) + " (" + fixed(removed_percent, 1) + "% removed)"});
   t.add({"vertices", std::to_string(s.input_vertices), std::to_string(s.output_vertices)});
-  t.add({"smallest dihedral angle", fixed(q_in.min_dihedral_angle, 2), fixed(q_out.min_dihedral_angle, 2)});
-  t.add({"under 5 / 10 degrees",
-         fixed(100 * q_in.share_under_5(), 3) + "% / " + fixed(100 * q_in.share_under_10(), 2) + "%",
-         fixed(100 * q_out.share_under_5(), 3) + "% / " + fixed(100 * q_out.share_under_10(), 2) + "%"});
-  t.add({"smallest radius ratio", fixed(q_in.min_radius_ratio, 3), fixed(q_out.min_radius_ratio, 3)});
-  t.add({"boundary distance (of diagonal)", "",
-         fixed(100 * d.relative(), 3) + "% (bound " +
-             (std::isfinite(s.max_boundary_error) && d.diagonal > 0
-                  ? fixed(100 * s.max_boundary_error / d.diagonal, 3) + "%)"
-                  : std::string("none)"))});
+  quality_rows(t, q_in, q_out);
+  boundary_distance_row(t, d, s.max_boundary_error);
   t.add({"rounds", "", std::to_string(s.rounds) + " (" + PSO::simplification_stop_name(s.stop) + ")"});
   t.add({"max queue size", "", std::to_string(s.max_queue_size)});
-  Table b({"blocked candidates", "all rounds", "last round"});
-  const auto all = reasons(s.blocked);
-  for (const auto& r : all) {
-    std::size_t last = 0;
-    for (const auto& x : reasons(s.blocked_last_round))
-      if (x.first == r.first) last = x.second;
-    b.add({r.first, std::to_string(r.second), std::to_string(last)});
+  const bool optimized = settings.optimization_rounds > 0;
+  if (optimized) {
+    t.add({"optimisation rounds", "", std::to_string(opt.rounds)});
+    t.add({"vertex moves", "", std::to_string(opt.vertex_moves)});
+    t.add({"flips 2-3 / 3-2 / 4-4", "",
+           std::to_string(opt.flips_2_3) + " / " + std::to_string(opt.flips_3_2) + " / " +
+               std::to_string(opt.flips_4_4)});
+    t.add({"edge removals", "", std::to_string(opt.edge_removals)});
+  }
+  // Why collapses were blocked (all rounds, last round) and, with optimisation, why moves and flips
+  // were refused: one row per reason, the collapses' most frequent first.
+  std::vector<std::string> header{"blocked candidates", "all rounds", "last round"};
+  if (optimized) {
+    header.push_back("moves refused");
+    header.push_back("flips refused");
+  }
+  Table b(header);
+  for (const auto& r : blocked_reasons(s.blocked)) {
+    std::vector<std::string> row{r.first, std::to_string(r.second),
+                                 std::to_string(blocked_count(s.blocked_last_round, r.first))};
+    if (optimized) {
+      row.push_back(std::to_string(blocked_count(opt.refused_moves, r.first)));
+      row.push_back(std::to_string(blocked_count(opt.refused_flips, r.first)));
+    }
+    b.add(row);
   }
   std::cout << input << " (k_v = " << bucket_size_string(kv) << ", " << fixed(s.seconds, 3) << " s)\n"
             << t.str() << b.str() << "wrote " << out << '\n';
@@ -234,50 +186,53 @@ int run_simplify(const Options& o) {
 } // namespace
 
 Command simplify_command() {
-  return Command("simplify", "local half-edge-collapse simplification (paper Section 9)")
-      .input()
+  Command c("simplify", "local half-edge-collapse simplification (paper Section 9)");
+  c.input()
       .synopsis("(--target F | --keep F | --max-length L)")
       .description(
           R"(Simplifies MESH by edge collapses leaf by leaf (paper Section 9): each leaf collapses its
 short edges, shortest first, under the boundary, geometric (exact orientation) and link
-conditions; then the mesh is compacted and the octree rebuilt, until the target is met or a round
-removes nothing.  The sharp edges and corners of the boundary and the surfaces between labels are
-kept (a feature vertex only slides along its curve, a corner never moves), no collapse creates a
-tetrahedron under the quality floor unless it replaces a worse one, and the surface stays within
---max-error of the input's.  Point data, cell data and labels follow.  With --kv inf the octree
-has one leaf: the global algorithm.  Exit status 4 when it stops before the target (the reason on
-stderr and in the JSON); the mesh written is the last valid one reached.)")
+conditions, then improves its tetrahedra by flips and vertex moves (--optimize); the mesh is
+compacted and the octree rebuilt, until the target is met or a round removes nothing, and
+--optimize rounds of flips and moves follow.  The sharp edges and corners of the boundary and the
+surfaces between labels are kept (a feature vertex only slides along its curve, a corner never
+moves); no collapse, flip or move makes a tetrahedron under a quality floor (--min-dihedral,
+--min-radius-ratio, both at once) or over the ceiling (--max-dihedral) unless it replaces worse
+ones, and the surface stays within --max-error of the input's.  Point data, cell data and labels
+follow.  With --kv inf the octree has one leaf: the global algorithm.  Exit status 4 when it stops
+before the target (the reason on stderr and in the JSON); the mesh written is the last valid one
+reached.)")
       .option("--target", "F",
               "stop once this fraction of the tetrahedra is removed (0 < F < 1, or a\n"
               "percentage: 0.75 or 75%)")
       .option("--keep", "F",
               "stop once this fraction of the tetrahedra is left, as CGAL and MeshLab\n"
               "count it: --keep 25% is --target 75%")
-      .option("--max-length", "L", "collapse only edges shorter than L (with --target: both)")
-      .option("--min-dihedral", "DEG",
-              "quality floor: smallest dihedral angle of a new tetrahedron (default 5; 0: none)")
-      .option("--min-radius-ratio", "R", "quality floor on the radius ratio instead, in [0, 1] (e.g. 0.1)")
-      .option("--feature-angle", "DEG",
-              "surface edges bending more than DEG are sharp features (default 40; 180: none)")
-      .option("--max-error", "E",
-              "bound on the distance to the input surface: a distance, P% of the bounding-box\n"
-              "diagonal (default 0.2%) or none")
+      .option("--max-length", "L", "collapse only edges shorter than L (with --target: both)");
+  guard_options(c)
+      .option("--optimize", "N",
+              "rounds of flips and vertex moves after the collapses (default 2; 0: coarsen\n"
+              "only, no vertex moves and no flips)")
       .option("--priority", "P",
               "length (shortest edge first, default) or quadric (smallest surface error first)")
       .option("--placement", "P",
-              "half-edge (vertices never move, default) or optimal (the merged vertex at the best\n"
-              "point of the edge when both ends are inside or on one smooth surface patch)")
+              "half-edge (the removed end goes into the other, default) or optimal (the merged\n"
+              "vertex at the best point of the edge when both ends are inside or on one smooth\n"
+              "surface patch)")
       .kv()
       .output("OUT", "", "write the simplified mesh to OUT", true)
       .json_keys("keys: input_tetrahedra, output_tetrahedra, removed_tetrahedra, input_vertices,\n"
                  "output_vertices, kv, rounds, max_queue, seconds, stop (target_reached, nothing_left,\n"
                  "blocked, max_rounds), blocked and blocked_last_round {different_leaves, feature,\n"
-                 "boundary, flip, link, quality, error}, input_quality and output_quality\n"
-                 "{min_dihedral, max_dihedral, min_radius_ratio, share_under_5, share_under_10},\n"
-                 "boundary_error {bound, input_to_output, output_to_input, relative}, output")
+                 "boundary, flip, link, quality, error}, optimization {vertex_moves, flips_2_3,\n"
+                 "flips_3_2, flips_4_4, edge_removals, splits, rounds, refused_moves, refused_flips,\n"
+                 "refused_splits (each as blocked)}, input_quality and output_quality {min_dihedral,\n"
+                 "max_dihedral, min_radius_ratio, share_under_5, share_under_10}, boundary_error\n"
+                 "{bound, input_to_output, output_to_input, relative}, output")
       .quiet_silences_summary()
       .check(simplify_settings)
       .run(run_simplify);
+  return c;
 }
 
 } // namespace prstar

@@ -28,6 +28,7 @@ Command boundary_command();
 Command curvature_command();
 Command validate_command();
 Command simplify_command();
+Command remesh_command();
 Command generate_command();
 Command convert_command();
 Command info_command();

@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
       prstar::demo_command(),     prstar::info_command(),     prstar::convert_command(),
       prstar::stats_command(),    prstar::boundary_command(), prstar::curvature_command(),
       prstar::validate_command(), prstar::critical_command(), prstar::morse_command(),
-      prstar::simplify_command(), prstar::generate_command()};
+      prstar::simplify_command(), prstar::remesh_command(),   prstar::generate_command()};
 #ifdef PRSTAR_WITH_MPI
   if (launched_by_mpirun()) {
     int provided = 0;
