@@ -1,7 +1,7 @@
 # Copyright (c) 2026 The PR-star octree project.
 # SPDX-License-Identifier: LGPL-3.0-or-later
-"""Type stubs of prstar._simplification: validation (``prstar validate``) and simplification
-(``prstar simplify``)."""
+"""Type stubs of prstar._simplification: validation (``prstar validate``), simplification
+(``prstar simplify``) and remeshing (``prstar remesh``)."""
 
 from dataclasses import dataclass
 from typing import Any, Dict, List, Optional, Union
@@ -10,7 +10,7 @@ import numpy as np
 
 from ._core import Mesh, MeshLike, ProgressCallback
 
-__all__ = ["ValidationReport", "validate", "SimplifyResult", "simplify"]
+__all__ = ["ValidationReport", "validate", "SimplifyResult", "simplify", "RemeshResult", "remesh"]
 
 @dataclass
 class ValidationReport:
@@ -74,8 +74,10 @@ def simplify(
     target: Optional[Union[float, str]] = None,
     keep: Optional[Union[float, str]] = None,
     max_length: Optional[float] = None,
-    min_dihedral: Optional[float] = None,
-    min_radius_ratio: Optional[float] = None,
+    min_dihedral: float = 5.0,
+    min_radius_ratio: float = 0.1,
+    max_dihedral: float = 165.0,
+    optimize: int = 2,
     feature_angle: float = 40.0,
     max_error: Optional[Union[float, str]] = "0.2%",
     priority: str = "length",
@@ -85,4 +87,33 @@ def simplify(
     progress: Optional[ProgressCallback] = None,
 ) -> SimplifyResult:
     """Edge-collapse simplification leaf by leaf (``prstar simplify``): target/keep as 0.3 or "30%",
+    the floors and the ceiling all at once, ``optimize`` rounds of flips and moves after the collapses,
     max_error a distance, "0.2%" of the diagonal or None; ValueError for a bad option."""
+
+@dataclass
+class RemeshResult:
+    """What remesh returns: the remeshed mesh and the statistics of ``prstar remesh --json``."""
+
+    mesh: Mesh  # points (n, 3) float64, tetrahedra (m, 4) uint32 positive, labels int32 or None, data carried
+    statistics: Dict[str, Any]
+    input_vertex: np.ndarray  # (n,) int64 the input vertex whose data each output vertex carries
+    input_tetrahedron: np.ndarray  # (m,) int64 the input tetrahedron each output tetrahedron lies in part of
+    def summary(self) -> str:
+        """The result in words (the CLI's table)."""
+
+def remesh(
+    mesh: MeshLike,
+    *,
+    edge_length: Optional[Union[float, str]] = None,
+    size_field: Optional[Union[str, Any]] = None,
+    iterations: int = 5,
+    min_dihedral: float = 5.0,
+    max_dihedral: float = 165.0,
+    min_radius_ratio: float = 0.1,
+    feature_angle: float = 40.0,
+    max_error: Optional[Union[float, str]] = "0.2%",
+    bucket_size: Optional[Union[int, float]] = None,
+    threads: Optional[int] = None,
+) -> RemeshResult:
+    """Local remeshing to a target edge length (``prstar remesh``): edge_length a length or "2%" of the
+    diagonal, or size_field a point-data name or an array; ValueError for a bad option."""
