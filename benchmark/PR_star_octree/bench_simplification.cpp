@@ -37,7 +37,7 @@
 //        bench_simplification --side-by-side [--fraction F | --edge-length H1,H2,...]
 //                             [--cgal-iterations N] [--optimize R1,R2,...|default]
 //                             [--remesh-iterations N] [--no-remesh] [--kv K] [--threads T]
-//                             [--csv OUT.csv] MESH...
+//                             [--output-dir DIR] [--csv OUT.csv] MESH...
 // Markdown on stdout.
 
 #include <CGAL/PR_star_octree.h>
@@ -590,7 +590,20 @@ struct Thread_limit {
 #endif
 };
 
-Side_run side_cgal(const Reference& ref, double edge_length, int iterations) {
+// Writes an output for checks by other tools (`--output-dir`), after its measures; "" writes nothing.
+template <class Points, class Tets>
+void write_output(const std::string& file, const Points& points, const Tets& tets,
+                  const std::vector<int>& labels) {
+  if (file.empty()) return;
+  Mesh m;
+  m.points.assign(points.begin(), points.end());
+  for (const auto& t : tets)
+    m.tetrahedra.push_back({{Mesh::Index(t[0]), Mesh::Index(t[1]), Mesh::Index(t[2]), Mesh::Index(t[3])}});
+  m.tetrahedron_labels = labels;
+  P::IO::write_tetrahedral_mesh(file, m);
+}
+
+Side_run side_cgal(const Reference& ref, double edge_length, int iterations, const std::string& output_file) {
   Side_run r = prstar_bench::in_child<Side_run>([&] {
     Side_run r;
     try {
@@ -602,6 +615,7 @@ Side_run side_cgal(const Reference& ref, double edge_length, int iterations) {
       r.run_peak_rss_bytes = c.run_peak_rss_bytes;
       r.constrained_edges = c.constrained_edges;
       r.out = measure_full(ref, c.points, c.tetrahedra, c.labels);
+      write_output(output_file, c.points, c.tetrahedra, c.labels);
     } catch (const std::exception& e) {
       std::strncpy(r.error, e.what(), sizeof r.error - 1);
     }
@@ -613,7 +627,7 @@ Side_run side_cgal(const Reference& ref, double edge_length, int iterations) {
 
 // The package's simplify() or remesh(), given as `run()` returning a Simplification_result.
 template <class Run>
-Side_run side_package(const Reference& ref, int threads, const Run& run) {
+Side_run side_package(const Reference& ref, int threads, const std::string& output_file, const Run& run) {
   Side_run r = prstar_bench::in_child<Side_run>([&] {
     Side_run r;
     try {
@@ -633,6 +647,7 @@ Side_run side_package(const Reference& ref, int threads, const Run& run) {
       r.splits = s.optimization.splits;
       r.optimization_rounds = s.optimization.rounds;
       r.out = measure_full(ref, res.mesh.points, res.mesh.tetrahedra, res.mesh.tetrahedron_labels);
+      write_output(output_file, res.mesh.points, res.mesh.tetrahedra, res.mesh.tetrahedron_labels);
     } catch (const std::exception& e) {
       std::strncpy(r.error, e.what(), sizeof r.error - 1);
     }
@@ -652,6 +667,7 @@ struct Side_options {
   std::size_t kv = 0; // 0: the package's default
   int threads = 1;
   std::string csv_file;
+  std::string output_dir; // where to write the outputs (.vtu), or ""
 };
 
 struct Side_row {
@@ -703,10 +719,15 @@ int run_side_by_side(const std::vector<std::string>& files, const Side_options& 
               << " tetrahedra, " << ref.label_volumes.size() << " label(s); h = " << h << '\n';
     const Full_measures in = measure_full(ref, mesh.points, mesh.tetrahedra, mesh.tetrahedron_labels, false);
 
+    // DIR/<mesh without extension>_<what>.vtu, or "" without --output-dir
+    auto output_file = [&](const std::string& what) {
+      return o.output_dir.empty() ? std::string()
+                                  : o.output_dir + "/" + name.substr(0, name.find('.')) + "_" + what + ".vtu";
+    };
     std::vector<Side_row> rows;
     std::cerr << "  CGAL tetrahedral_isotropic_remeshing, " << o.cgal_iterations << " iterations ... "
               << std::flush;
-    rows.push_back({"CGAL remeshing", side_cgal(ref, h, o.cgal_iterations)});
+    rows.push_back({"CGAL remeshing", side_cgal(ref, h, o.cgal_iterations, output_file("cgal"))});
     const Side_run cgal = rows[0].run; // a copy: rows grows
     std::cerr << (cgal.ok ? fixed(cgal.seconds, 2) + " s, " + std::to_string(cgal.out.basic.tetrahedra) +
                                 " tetrahedra"
@@ -720,7 +741,9 @@ int run_side_by_side(const std::vector<std::string>& files, const Side_options& 
       const std::string what =
           "simplify" + (rounds < 0 ? std::string() : " (optimization_rounds " + std::to_string(rounds) + ")");
       std::cerr << "  " << what << ", target " << target << " ... " << std::flush;
-      rows.push_back({what, side_package(ref, o.threads, [&] {
+      const std::string file =
+          output_file(rounds < 0 ? std::string("simplify") : "simplify_opt" + std::to_string(rounds));
+      rows.push_back({what, side_package(ref, o.threads, file, [&] {
                         auto np = P::parameters::target_fraction(target).bucket_size(
                             o.kv ? o.kv : std::size_t(Octree::default_bucket_size));
                         return rounds < 0 ? P::simplify(mesh, np)
@@ -735,7 +758,7 @@ int run_side_by_side(const std::vector<std::string>& files, const Side_options& 
     if (o.remesh) {
       std::cerr << "  remesh, h = " << h << " ... " << std::flush;
       rows.push_back(
-          {"remesh", side_package(ref, o.threads, [&] {
+          {"remesh", side_package(ref, o.threads, output_file("remesh"), [&] {
              auto np = P::parameters::bucket_size(o.kv ? o.kv : std::size_t(Octree::default_bucket_size));
              return o.remesh_iterations < 0
                         ? P::remesh(mesh, h, np)
@@ -940,7 +963,7 @@ int main(int argc, char** argv) {
       "       bench_simplification --side-by-side [--fraction F | --edge-length H1,H2,...] "
       "[--cgal-iterations N] "
       "[--optimize R1,R2,...|default] [--remesh-iterations N] [--no-remesh] [--kv K] [--threads T] "
-      "[--csv OUT.csv] MESH...\n";
+      "[--output-dir DIR] [--csv OUT.csv] MESH...\n";
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
@@ -952,7 +975,7 @@ int main(int argc, char** argv) {
         side.remesh = false;
       else if ((a == "--kv" || a == "--targets" || a == "--reps" || a == "--csv" ||
                 a == "--cgal-iterations" || a == "--fraction" || a == "--edge-length" || a == "--optimize" ||
-                a == "--remesh-iterations" || a == "--threads") &&
+                a == "--remesh-iterations" || a == "--threads" || a == "--output-dir") &&
                i + 1 < argc) {
         const std::string v = argv[++i];
         if (a == "--kv") {
@@ -983,6 +1006,8 @@ int main(int argc, char** argv) {
           side.remesh_iterations = std::stol(v);
         else if (a == "--threads")
           side.threads = std::max(1, std::stoi(v));
+        else if (a == "--output-dir")
+          side.output_dir = v;
         else
           csv_file = v;
       } else if (!a.empty() && a[0] == '-') {
