@@ -40,6 +40,21 @@ std::vector<double> sizing_values(const Sizing& sizing, std::size_t vertices) {
   return h;
 }
 
+// The placement of the remeshing's collapses: the midpoint of an edge inside the volume (both ends
+// interior: the new edges are the shortest, so fewer collapses make an edge too long), else a
+// half-edge collapse.
+struct Midpoint_placement {
+  template <class EdgeProfile>
+  std::optional<typename EdgeProfile::Point_3> operator()(const EdgeProfile& e) const {
+    if (e.stratum(e.v0()) != 3 || e.stratum(e.v1()) != 3) return std::nullopt;
+    return make_point<typename EdgeProfile::Point_3>(lerp(e.coordinates(e.v0()), e.coordinates(e.v1()), 0.5));
+  }
+  template <class EdgeProfile>
+  bool remove_v1_first(const EdgeProfile&) const {
+    return true;
+  }
+};
+
 } // namespace internal
 
 /// \ingroup PkgPRStarOctreeRef
@@ -51,9 +66,9 @@ std::vector<double> sizing_values(const Sizing& sizing, std::size_t vertices) {
 /// Each round builds the PR-star octree of the current mesh and visits its leaves in depth-first
 /// order.  A leaf, on the edges with an end among its vertices,
 /// - splits at its midpoint every edge longer than 4/3 of the target (longest first);
-/// - collapses every edge shorter than 4/5 of the target (shortest first) that creates no edge
-///   longer than 4/3 of it, with every check of `simplify()` (strata, exact orientation, link
-///   condition, quality floors, error bound);
+/// - collapses every edge shorter than 4/5 of the target (shortest first; inside the volume into
+///   its midpoint, else into one end) that creates no edge longer than 4/3 of it, with every check of
+///   `simplify()` (strata, exact orientation, link condition, quality floors, error bound);
 /// - flips (2-3, 3-2, 4-4 and the removal of edges in up to seven tetrahedra) where the worst
 ///   tetrahedron of the region gets better, inside one label only and never on the surface;
 /// - smooths its vertices: interior ones towards the volume-weighted circumcentres of their star,
@@ -172,9 +187,9 @@ auto remesh(const InputMesh& input, const Sizing& target_edge_length,
   const auto constraints = options.constraints();
   internal::Compact_mesh<GeomTraits> out;
   using Cost = internal::Priority_cost<Edge_length_priority<GeomTraits>>;
-  internal::Local_simplifier<GeomTraits, Cost, Edge_collapse_placement, Quality_and_error_filter,
+  internal::Local_simplifier<GeomTraits, Cost, internal::Midpoint_placement, Quality_and_error_filter,
                              Simplification_visitor_base>
-      remesher(settings, Cost{Edge_length_priority<GeomTraits>{options.gt}}, Edge_collapse_placement(),
+      remesher(settings, Cost{Edge_length_priority<GeomTraits>{options.gt}}, internal::Midpoint_placement(),
                Quality_and_error_filter(), visitor, options.gt);
   remesher.run_remesh(tree, labels, std::move(sizing), constraints.first, constraints.second, s, out);
   tree.reset();
