@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <queue>
 #include <utility>
 #include <vector>
@@ -34,6 +35,59 @@
 namespace CGAL {
 namespace PR_star_octree {
 namespace internal {
+
+// The volume of each label (all 0 without labels) of the tetrahedra not deleted.
+template <class Mesh>
+std::map<int, double> label_volumes(const Mesh& mesh) {
+  std::map<int, double> v;
+  for (std::size_t t = 0; t < mesh.work.size(); ++t) {
+    if (mesh.deleted_tet[t]) continue;
+    const auto& c = mesh.work[t];
+    const Vec3 &p = mesh.posd[c[0]], &q = mesh.posd[c[1]], &r = mesh.posd[c[2]], &s = mesh.posd[c[3]];
+    v[mesh.label[t]] += dot(minus(q, p), cross(minus(r, p), minus(s, p))) / 6;
+  }
+  return v;
+}
+
+// The area of the surface of each label: its boundary triangles and those it shares with another
+// label (each side counts it).
+template <class Tetrahedra>
+std::map<int, double> label_surface_areas(const std::vector<Vec3>& points, const Tetrahedra& tets,
+                                          const std::vector<int>& labels) {
+  struct Face {
+    std::array<std::size_t, 3> v;
+    int label;
+    bool operator<(const Face& o) const { return v < o.v; }
+  };
+  std::vector<Face> faces;
+  faces.reserve(4 * tets.size());
+  for (std::size_t t = 0; t < tets.size(); ++t)
+    for (int k = 0; k < 4; ++k) {
+      Face f{{{std::size_t(tets[t][(k + 1) % 4]), std::size_t(tets[t][(k + 2) % 4]),
+               std::size_t(tets[t][(k + 3) % 4])}},
+             labels.empty() ? 0 : labels[t]};
+      std::sort(f.v.begin(), f.v.end());
+      faces.push_back(f);
+    }
+  std::sort(faces.begin(), faces.end());
+  std::map<int, double> area;
+  auto add = [&](const Face& f) {
+    area[f.label] +=
+        0.5 * norm(cross(minus(points[f.v[1]], points[f.v[0]]), minus(points[f.v[2]], points[f.v[0]])));
+  };
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i;
+    while (j < faces.size() && faces[j].v == faces[i].v) ++j;
+    if (j - i == 1)
+      add(faces[i]);
+    else if (j - i == 2 && faces[i].label != faces[i + 1].label) {
+      add(faces[i]);
+      add(faces[i + 1]);
+    }
+    i = j;
+  }
+  return area;
+}
 
 template <class GeomTraits>
 class Local_optimizer {
@@ -59,6 +113,10 @@ public:
     Stats* stats = nullptr;
     Quality_floors floors;
     GeomTraits gt;
+    // The offset from the input surface, along its outward normal, at which the surface vertices
+    // of each label give it its input volume back (the volume lost or gained over its area, summed
+    // over the rounds); empty: no label drifted.
+    std::map<int, double> drift;
     long long change = 0; // tetrahedra added minus tetrahedra removed by flips and splits
   };
 
@@ -82,7 +140,7 @@ public:
     for (const auto& st : bad_)
       if (!mesh.deleted_tet[st.second]) improve_tetrahedron(st.second);
     for (Index v = mesh.vb; v < mesh.ve; ++v)
-      if (!mesh.deleted_vertex[v]) smooth(v, all);
+      if (!mesh.deleted_vertex[v]) smooth(v, all || (!c_.drift.empty() && mesh.dimension(v) == 2));
   }
 
   // Splits, longest first, the edges with an end in the leaf longer than 4/3 of their target.
@@ -456,6 +514,9 @@ private:
       for (Index w : surface_nbr_)
         for (int i = 0; i < 3; ++i) centroid[i] += mesh.posd[w][i] / double(surface_nbr_.size());
       targets_.push_back(centroid);
+      volume_offset(v);
+      if (norm(offset_) > 0) targets_.push_back(x); // the volume correction alone
+
     } else {
       surface_nbr_.clear();
       for (Index w : nbr_)
@@ -479,13 +540,58 @@ private:
     for (const Vec3& target : targets_)
       for (double step : {1., 0.5, 0.25}) {
         Vec3 p = lerp(x, target, step);
-        if (dim == 2) p = c_.error->closest_point(p);
+        if (dim == 2) {
+          p = c_.error->closest_point(p);
+          for (int i = 0; i < 3; ++i) p[i] += offset_[i];
+        }
         if (norm(minus(p, x)) == 0) continue;
         const Collapse_refusal why = try_move(v, p, before);
         if (why == Collapse_refusal::NONE) return;
         if (first == Collapse_refusal::NONE) first = why;
       }
     if (first != Collapse_refusal::NONE) refuse(c_.stats->refused_moves, first);
+  }
+
+  // The move of the surface vertex v (stratum 2) that gives its labels their volume back: each
+  // label's drift along its outward normal at v (both labels' on an interface).
+  void volume_offset(Index v) {
+    offset_ = Vec3{{0, 0, 0}};
+    if (c_.drift.empty()) return;
+    Mesh& mesh = *c_.mesh;
+    normals_.clear();
+    for (Index t : star_) {
+      const Tetrahedron& c = mesh.work[t];
+      for (int k = 0; k < 4; ++k) {
+        if (c[k] == v) continue;
+        // the face opposite c[k], which holds v: on the surface when no other tetrahedron of the
+        // star of the same label has it
+        std::array<Index, 3> f{};
+        int m = 0;
+        for (int j = 0; j < 4; ++j)
+          if (j != k) f[m++] = c[j];
+        bool inner = false;
+        for (Index u : star_)
+          if (u != t && mesh.label[u] == mesh.label[t] && contains(mesh.work[u], f[0]) &&
+              contains(mesh.work[u], f[1]) && contains(mesh.work[u], f[2]))
+            inner = true;
+        if (inner) continue;
+        Vec3 n = cross(minus(mesh.posd[f[1]], mesh.posd[f[0]]), minus(mesh.posd[f[2]], mesh.posd[f[0]]));
+        if (dot(n, minus(mesh.posd[c[k]], mesh.posd[f[0]])) > 0) n = Vec3{{-n[0], -n[1], -n[2]}};
+        auto it = std::find_if(normals_.begin(), normals_.end(),
+                               [&](const auto& e) { return e.first == mesh.label[t]; });
+        if (it == normals_.end())
+          normals_.emplace_back(mesh.label[t], n);
+        else
+          for (int i = 0; i < 3; ++i) it->second[i] += n[i];
+      }
+    }
+    if (normals_.empty() || normals_.size() > 2) return;
+    for (const auto& e : normals_) {
+      const auto d = c_.drift.find(e.first);
+      const double l = norm(e.second);
+      if (d == c_.drift.end() || !(l > 0)) continue;
+      for (int i = 0; i < 3; ++i) offset_[i] += d->second * e.second[i] / l;
+    }
   }
 
   Collapse_refusal try_move(Index v, const Vec3& p, const Region_quality& before) {
@@ -596,6 +702,8 @@ private:
   std::vector<Tetrahedron> cells_, split_cells_;
   std::vector<int> labels_;
   std::vector<Vec3> targets_;
+  Vec3 offset_{{0, 0, 0}};
+  std::vector<std::pair<int, Vec3>> normals_;
   std::vector<std::pair<Index, int>> faces_;
   std::vector<std::pair<Index, Index>> link_;
   Surface_link<Index> surface_link_;

@@ -34,6 +34,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -238,6 +239,35 @@ private:
         [&](std::size_t a, std::size_t b) { return constrained_edge(original(a), original(b)); },
         constraints_);
     error_.initialize(input_pos_, constraints_, settings_.feature_angle, settings_.max_boundary_error);
+    // The labels' volumes and surface areas of the input, to give the labels their volume back.
+    input_volumes_.clear();
+    surface_offset_.clear();
+    label_areas_ = label_surface_areas(input_pos_, tree.tetrahedra(), tet_labels);
+    for (std::size_t t = 0; t < tree.number_of_tetrahedra(); ++t) {
+      const auto& c = tree.tetrahedra()[t];
+      const Vec3 &p = input_pos_[c[0]], &q = input_pos_[c[1]], &r = input_pos_[c[2]], &s = input_pos_[c[3]];
+      input_volumes_[tet_labels.empty() ? 0 : tet_labels[t]] +=
+          dot(minus(q, p), cross(minus(r, p), minus(s, p))) / 6;
+    }
+  }
+
+  // The offset of each label's surface from the input surface that gives it its volume back (see
+  // `Local_optimizer`), corrected by the drift of the volume where it is over a hundredth of a
+  // percent; with an error bound only (the surface may not move without).
+  void measure_drift() {
+    context_.drift.clear();
+    if (settings_.optimization_rounds == 0 && !settings_.remesh) return;
+    if (!error_.bounded()) return;
+    for (const auto& lv : label_volumes(mesh_)) {
+      const auto v0 = input_volumes_.find(lv.first);
+      const auto a = label_areas_.find(lv.first);
+      if (v0 == input_volumes_.end() || a == label_areas_.end() || !(a->second > 0)) continue;
+      // (accumulated: the moves put the surface vertices at this offset from the input surface)
+      double& offset = surface_offset_[lv.first];
+      if (std::abs(v0->second - lv.second) > 1e-4 * std::abs(v0->second))
+        offset += (v0->second - lv.second) / a->second;
+      if (offset != 0) context_.drift[lv.first] = offset;
+    }
   }
 
   // A deterministic sample of edge lengths (at most ~100K) and its q-quantile.
@@ -290,6 +320,7 @@ private:
   void round(const Octree& tree, double threshold, Compact_mesh<GeomTraits>& out, Leaf_work work) {
     threshold_ = threshold;
     load_round(tree, out);
+    measure_drift();
     // The leaves one after the other (each change changes the mesh the next leaves see), until
     // the target is reached.
     Leaf_executor<CGAL::Sequential_tag>().for_each(
@@ -508,6 +539,7 @@ private:
   Quality_floors floors_;
   std::vector<double> sizing_; // remeshing: the target edge length by stable id
   std::vector<Index> long_nbr_;
+  std::map<int, double> input_volumes_, label_areas_, surface_offset_;
   typename Local_optimizer<GeomTraits>::Context context_;
   Local_optimizer<GeomTraits> optimizer_;
 };
