@@ -1407,8 +1407,8 @@ int main(int argc, char** argv) {
   test_flips_2_3_and_3_2();
   test_edge_removal();
   test_remesh_lattice();
-  for (const char* name : {"sphere.mesh", "torus.mesh"})
-    if (const auto file = data.generated_file(name)) test_remesh_curved(*file);
+  // (one curved mesh: the torus takes as long again, under the sanitizers too)
+  if (const auto file = data.generated_file("sphere.mesh")) test_remesh_curved(*file);
 
   for (const char* name : {"sphere.mesh", "torus.mesh"})
     if (const auto file = data.generated_file(name)) test_mesh(*file, true);
