@@ -167,13 +167,7 @@ auto remesh(const InputMesh& input, const Sizing& target_edge_length,
 
   std::optional<Octree> tree;
   tree.emplace(input, parameters::bucket_size(options.settings.bucket_size).geom_traits(options.gt));
-  std::vector<int> labels; // in the input's numbering
-  if (tree->has_tetrahedron_labels()) {
-    labels.resize(tree->number_of_tetrahedra());
-    for (std::size_t t = 0; t < labels.size(); ++t)
-      labels[tree->original_tetrahedron(static_cast<typename Octree::Index>(t))] =
-          tree->tetrahedron_label(static_cast<typename Octree::Index>(t));
-  }
+  const std::vector<int> labels = internal::input_labels(*tree);
   s.input_vertices = tree->number_of_vertices();
   s.input_tetrahedra = tree->number_of_tetrahedra();
   internal::Simplification_settings settings = options.settings;
@@ -194,23 +188,7 @@ auto remesh(const InputMesh& input, const Sizing& target_edge_length,
   remesher.run_remesh(tree, labels, std::move(sizing), constraints.first, constraints.second, s, out);
   tree.reset();
 
-  s.output_vertices = out.points.size();
-  s.output_tetrahedra = out.tetrahedra.size();
-  result.mesh.points = std::move(out.points);
-  result.mesh.tetrahedra.assign(out.tetrahedra.begin(), out.tetrahedra.end());
-  if (input.has_scalar_field()) {
-    Point_data_array a{"scalar", std::vector<double>(out.input_vertex.size())};
-    for (std::size_t v = 0; v < out.input_vertex.size(); ++v)
-      a.values[v] = static_cast<double>(input.scalar(out.input_vertex[v]));
-    result.mesh.point_data.push_back(std::move(a));
-  }
-  if (!labels.empty()) {
-    result.mesh.tetrahedron_labels.resize(out.input_tetrahedron.size());
-    for (std::size_t t = 0; t < out.input_tetrahedron.size(); ++t)
-      result.mesh.tetrahedron_labels[t] = labels[out.input_tetrahedron[t]];
-  }
-  result.input_vertex = std::move(out.input_vertex);
-  result.input_tetrahedron = std::move(out.input_tetrahedron);
+  internal::finish_result(input, labels, out, result);
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

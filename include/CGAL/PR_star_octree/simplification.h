@@ -327,6 +327,43 @@ private:
 
 namespace internal {
 
+// The tetrahedron labels of the octree's input, in the input's numbering (empty without labels).
+template <class Octree>
+std::vector<int> input_labels(const Octree& tree) {
+  std::vector<int> labels;
+  if (!tree.has_tetrahedron_labels()) return labels;
+  labels.resize(tree.number_of_tetrahedra());
+  for (std::size_t t = 0; t < labels.size(); ++t)
+    labels[tree.original_tetrahedron(static_cast<typename Octree::Index>(t))] =
+        tree.tetrahedron_label(static_cast<typename Octree::Index>(t));
+  return labels;
+}
+
+// The result of `simplify()` or `remesh()` from the last compact mesh `out`: the mesh, the input's
+// scalar field and labels carried along, the input index of each vertex and tetrahedron.
+template <class InputMesh, class GeomTraits, class Point_3>
+void finish_result(const InputMesh& input, const std::vector<int>& labels, Compact_mesh<GeomTraits>& out,
+                   Simplification_result<Point_3>& result) {
+  Simplification_statistics& s = result.statistics;
+  s.output_vertices = out.points.size();
+  s.output_tetrahedra = out.tetrahedra.size();
+  result.mesh.points = std::move(out.points);
+  result.mesh.tetrahedra.assign(out.tetrahedra.begin(), out.tetrahedra.end());
+  if (input.has_scalar_field()) {
+    Point_data_array a{"scalar", std::vector<double>(out.input_vertex.size())};
+    for (std::size_t v = 0; v < out.input_vertex.size(); ++v)
+      a.values[v] = static_cast<double>(input.scalar(out.input_vertex[v]));
+    result.mesh.point_data.push_back(std::move(a));
+  }
+  if (!labels.empty()) {
+    result.mesh.tetrahedron_labels.resize(out.input_tetrahedron.size());
+    for (std::size_t t = 0; t < out.input_tetrahedron.size(); ++t)
+      result.mesh.tetrahedron_labels[t] = labels[out.input_tetrahedron[t]];
+  }
+  result.input_vertex = std::move(out.input_vertex);
+  result.input_tetrahedron = std::move(out.input_tetrahedron);
+}
+
 // The point data, cell data and label names of `mesh` onto the output of `result`.
 template <class P, class I, class Result>
 void carry_mesh_data(const Indexed_tetrahedral_mesh<P, I>& mesh, Result& result) {
@@ -537,13 +574,7 @@ auto simplify(const InputMesh& input, const NP& np = parameters::default_values(
   // The first round's octree, on the input: it validates and orients it.
   std::optional<Octree> tree;
   tree.emplace(input, parameters::bucket_size(options.settings.bucket_size).geom_traits(options.gt));
-  std::vector<int> labels; // in the input's numbering
-  if (tree->has_tetrahedron_labels()) {
-    labels.resize(tree->number_of_tetrahedra());
-    for (std::size_t t = 0; t < labels.size(); ++t)
-      labels[tree->original_tetrahedron(static_cast<typename Octree::Index>(t))] =
-          tree->tetrahedron_label(static_cast<typename Octree::Index>(t));
-  }
+  const std::vector<int> labels = internal::input_labels(*tree);
   s.input_vertices = tree->number_of_vertices();
   s.input_tetrahedra = tree->number_of_tetrahedra();
   internal::Simplification_settings settings = options.settings;
@@ -566,23 +597,7 @@ auto simplify(const InputMesh& input, const NP& np = parameters::default_values(
   simplifier.run(tree, labels, constraints.first, constraints.second, s, out);
   tree.reset();
 
-  s.output_vertices = out.points.size();
-  s.output_tetrahedra = out.tetrahedra.size();
-  result.mesh.points = std::move(out.points);
-  result.mesh.tetrahedra.assign(out.tetrahedra.begin(), out.tetrahedra.end());
-  if (input.has_scalar_field()) {
-    Point_data_array a{"scalar", std::vector<double>(out.input_vertex.size())};
-    for (std::size_t v = 0; v < out.input_vertex.size(); ++v)
-      a.values[v] = static_cast<double>(input.scalar(out.input_vertex[v]));
-    result.mesh.point_data.push_back(std::move(a));
-  }
-  if (!labels.empty()) {
-    result.mesh.tetrahedron_labels.resize(out.input_tetrahedron.size());
-    for (std::size_t t = 0; t < out.input_tetrahedron.size(); ++t)
-      result.mesh.tetrahedron_labels[t] = labels[out.input_tetrahedron[t]];
-  }
-  result.input_vertex = std::move(out.input_vertex);
-  result.input_tetrahedron = std::move(out.input_tetrahedron);
+  internal::finish_result(input, labels, out, result);
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
