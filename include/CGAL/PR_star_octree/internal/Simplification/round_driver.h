@@ -453,13 +453,14 @@ private:
     // Strata: a feature-curve vertex moves along a feature edge, a surface vertex along the surface.
     const Collapse_refusal strata = strata_(mesh_, c.st_e, r, k);
     if (strata != Collapse_refusal::NONE) return Refusal{strata};
+    // (remeshing: the cheap length check before the orientation and link tests)
+    if (settings_.remesh && creates_long_edge(c)) return Refusal{Collapse_refusal::QUALITY};
     // Geometry: exact orientation of the new tetrahedra.
     c.pk = move ? make_point<Point_3>(p) : mesh_.pos[k];
     c.make_new_cells(mesh_);
     if (!c.positive(gt_, mesh_)) return Refusal{Collapse_refusal::FLIP};
     // Topology: the link condition of the volume (boundary coned), of the surface and of the curves.
     if (!links_(mesh_, *c.st_r, *c.st_k, c.st_e, r, k, c.dr)) return Refusal{Collapse_refusal::LINK};
-    if (settings_.remesh && creates_long_edge(c)) return Refusal{Collapse_refusal::QUALITY};
     const Profile profile(mesh_, gt_, c, *this);
     const Collapse_refusal filtered = filter_(profile);
     if (filtered != Collapse_refusal::NONE) return Refusal{filtered};
