@@ -208,13 +208,15 @@ class SimplifyResult:
             along (a vertex keeps the data of the input vertex it stands for); with an Octree built with
             a field, that field as point data "scalar".
         statistics: the keys of ``prstar simplify --json`` (but ``output``): input_tetrahedra,
-            output_tetrahedra, removed_tetrahedra, input_vertices, output_vertices, kv (``math.inf`` for
-            one leaf), rounds, max_queue, seconds, stop, blocked and blocked_last_round {different_leaves,
-            feature, boundary, flip, link, quality, error}, optimization {vertex_moves, flips_2_3,
-            flips_3_2, flips_4_4, edge_removals, splits, rounds, refused_moves, refused_flips,
-            refused_splits (each as blocked)}, input_quality and output_quality
-            {min_dihedral, max_dihedral, min_radius_ratio, share_under_5, share_under_10},
-            boundary_error {bound (``math.inf``: none), input_to_output, output_to_input, relative}.
+            output_tetrahedra, removed_tetrahedra (input - output: by the collapses and the flips),
+            input_vertices, output_vertices, kv (``math.inf`` for one leaf), rounds, max_queue, seconds,
+            stop, blocked and blocked_last_round {different_leaves, feature, boundary, flip, link,
+            quality, error}, optimization {vertex_moves, flips_2_3, flips_3_2, flips_4_4,
+            edge_removals, splits, tetrahedra_added, tetrahedra_deleted (by the flips), rounds,
+            refused_moves, refused_flips, refused_splits (each as blocked)}, input_quality and
+            output_quality {min_dihedral, max_dihedral, min_radius_ratio, share_under_5,
+            share_under_10}, boundary_error {bound (``math.inf``: none), input_to_output,
+            output_to_input, relative}.
         stop: why it stopped: "target_reached", "nothing_left" (no target: no edge under max_length can
             go), "blocked" (a round removed nothing before the target), "max_rounds".
         target_reached: False when it stopped before the target ("blocked", "max_rounds": the CLI's exit
@@ -429,8 +431,9 @@ def simplify(
         bucket_size: the bucket threshold k_v of the octrees of the rounds (default 50, or the Octree's;
             ``math.inf``: one leaf, the global algorithm).
         threads: the number of threads (default: all cores, or the Octree's).
-        progress: called as ``progress(removed, to_remove)`` (tetrahedra) at the end of each round and,
-            at most ten times a second, during a round, with the GIL held; an exception it raises
+        progress: called as ``progress(removed, to_remove)`` (tetrahedra, never decreasing) at the start
+            and the end of each round and, at most ten times a second, during a round, with the GIL
+            held; ``(to_remove, to_remove)`` last when the target is reached; an exception it raises
             stops the simplification.
 
     Returns:
@@ -488,7 +491,8 @@ class RemeshResult:
             output_tetrahedra, input_vertices, output_vertices, edge_length (the target length, None
             with a size field), size_field (its name, "<array>" for an array, None without), kv
             (``math.inf`` for one leaf), iterations, rounds, seconds, operations {vertex_moves,
-            flips_2_3, flips_3_2, flips_4_4, edge_removals, splits, collapses}, refused {collapses,
+            flips_2_3, flips_3_2, flips_4_4, edge_removals, splits, tetrahedra_added,
+            tetrahedra_deleted (by the flips and splits), collapses}, refused {collapses,
             splits, flips, moves: each {different_leaves, feature, boundary, flip, link, quality,
             error}}, input_quality and output_quality {min_dihedral, max_dihedral, min_radius_ratio,
             share_under_5, share_under_10}, input_edges and output_edges {edges, share_in_range (the

@@ -156,20 +156,26 @@ struct Simplify_options {
 };
 
 // The progress of a simplification (simplify() has no progress parameter; its visitor is told of
-// every collapse and round): `progress(removed, to_remove)`, the tetrahedra removed by the rounds
-// finished, at each round's end (the last call: `removed == to_remove` when the target is reached)
-// and, throttled, during a round (so that Ctrl-C and an exception of the callable stop a long round).
+// every collapse and round): `progress(removed, to_remove)`, the tetrahedra removed so far, at each
+// round's start (the input's count minus the round's: collapses and flips together) and end (plus
+// what the round's collapses deleted), throttled during a round (so that Ctrl-C and an exception of
+// the callable stop a long round), never decreasing, and `(to_remove, to_remove)` at the end when the
+// target is reached.
 struct Progress_visitor : PSO::Simplification_visitor_base {
   const Progress* progress = nullptr;
-  std::size_t removed = 0, total = 0;
+  std::size_t input = 0, removed = 0, total = 0;
+  void report(std::size_t r) {
+    removed = (std::max)(removed, (std::min)(r, total));
+    (*progress)(removed, total);
+  }
   template <class CollapseProfile>
   void on_collapse(const CollapseProfile&) {
     (*progress)(removed, total);
   }
-  void on_round_finished(std::size_t, std::size_t n) {
-    removed += n;
-    (*progress)((std::min)(removed, total), total);
+  void on_round_started(std::size_t, std::size_t, std::size_t tetrahedra) {
+    report(input - (std::min)(tetrahedra, input));
   }
+  void on_round_finished(std::size_t, std::size_t n) { report(removed + n); }
 };
 
 py::dict blocked_dict(const PSO::Simplification_statistics::Blocked& b) {
@@ -193,6 +199,8 @@ py::dict optimization_dict(const PSO::Simplification_statistics::Optimization& o
   d["flips_4_4"] = o.flips_4_4;
   d["edge_removals"] = o.edge_removals;
   d["splits"] = o.splits;
+  d["tetrahedra_added"] = o.tetrahedra_added;
+  d["tetrahedra_deleted"] = o.tetrahedra_deleted;
   d["rounds"] = o.rounds;
   d["refused_moves"] = blocked_dict(o.refused_moves);
   d["refused_flips"] = blocked_dict(o.refused_flips);
@@ -302,6 +310,7 @@ py::dict run_simplify(const Input& input, const Simplify_options& s, std::size_t
   const std::size_t m = input.number_of_tetrahedra();
   visitor.total =
       s.target_fraction > 0 ? static_cast<std::size_t>(std::ceil(s.target_fraction * double(m))) : m;
+  visitor.input = m;
   PSO::Simplification_result<Point_3> res;
   PSO::Mesh_quality q_in, q_out;
   PSO::Boundary_distance distance;
@@ -326,6 +335,7 @@ py::dict run_simplify(const Input& input, const Simplify_options& s, std::size_t
     } catch (const std::invalid_argument& e) {
       rethrow_invalid(e, "simplify: ");
     }
+    if (res.statistics.stop == PSO::Simplification_stop::TARGET_REACHED) visitor.report(visitor.total);
     // The measures of `prstar simplify`
     const auto [points, tets] = input_arrays(input);
     q_in = PSO::mesh_quality(points, tets);
@@ -336,7 +346,8 @@ py::dict run_simplify(const Input& input, const Simplify_options& s, std::size_t
   py::dict stats; // the keys of `prstar simplify --json` (but "output"), in its order
   stats["input_tetrahedra"] = st.input_tetrahedra;
   stats["output_tetrahedra"] = st.output_tetrahedra;
-  stats["removed_tetrahedra"] = st.removed_tetrahedra;
+  // collapses and flips together, as the CLI reports it (the library's count is the collapses' only)
+  stats["removed_tetrahedra"] = st.input_tetrahedra - (std::min)(st.output_tetrahedra, st.input_tetrahedra);
   stats["input_vertices"] = st.input_vertices;
   stats["output_vertices"] = st.output_vertices;
   stats["kv"] = kv_value(s.bucket_size);
@@ -460,6 +471,8 @@ py::dict run_remesh(const Input& input, const Simplify_options& s, std::vector<d
   operations["flips_4_4"] = opt.flips_4_4;
   operations["edge_removals"] = opt.edge_removals;
   operations["splits"] = opt.splits;
+  operations["tetrahedra_added"] = opt.tetrahedra_added;
+  operations["tetrahedra_deleted"] = opt.tetrahedra_deleted;
   operations["collapses"] = st.collapses;
   stats["operations"] = operations;
   py::dict refused;

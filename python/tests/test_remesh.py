@@ -417,7 +417,9 @@ def test_simplify_options_equal_cli(simplified, cube, case):
     assert_same_mesh(r.mesh, path)
     o = r.statistics["optimization"]
     assert set(o) == {"vertex_moves", "flips_2_3", "flips_3_2", "flips_4_4", "edge_removals", "splits", "rounds",
-                      "refused_moves", "refused_flips", "refused_splits"}
+                      "tetrahedra_added", "tetrahedra_deleted", "refused_moves", "refused_flips", "refused_splits"}
+    s = r.statistics
+    assert s["removed_tetrahedra"] == s["input_tetrahedra"] - s["output_tetrahedra"]
     for k in ("refused_moves", "refused_flips", "refused_splits"):
         assert set(o[k]) == set(r.statistics["blocked"])
     assert o["splits"] == 0  # simplify never splits

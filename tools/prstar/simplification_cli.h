@@ -152,7 +152,8 @@ inline void json_quality(Json& j, const char* key, const CGAL::PR_star_octree::M
 }
 
 /// The operation counts of the optimisation, without the refusals: vertex_moves, flips_2_3,
-/// flips_3_2, flips_4_4, edge_removals, splits.
+/// flips_3_2, flips_4_4, edge_removals, splits, tetrahedra_added, tetrahedra_deleted (by the flips
+/// and splits).
 inline Json& json_operation_counts(Json& j,
                                    const CGAL::PR_star_octree::Simplification_statistics::Optimization& s) {
   return j.field("vertex_moves", s.vertex_moves)
@@ -160,7 +161,9 @@ inline Json& json_operation_counts(Json& j,
       .field("flips_3_2", s.flips_3_2)
       .field("flips_4_4", s.flips_4_4)
       .field("edge_removals", s.edge_removals)
-      .field("splits", s.splits);
+      .field("splits", s.splits)
+      .field("tetrahedra_added", s.tetrahedra_added)
+      .field("tetrahedra_deleted", s.tetrahedra_deleted);
 }
 
 /// The rows "smallest dihedral angle" ... "smallest radius ratio" of a table with an input and an
