@@ -135,12 +135,12 @@ public:
         out.input_tetrahedron[t] = tree->original_tetrahedron(static_cast<Index>(t));
     }
     // Rounds of flips and smoothing only, on the octree of the simplified mesh.
+    tree.reset(); // (the last collapse round's octree is not needed any more)
     for (std::size_t i = 0; i < settings_.optimization_rounds; ++i) {
-      if (tree) tree.reset();
-      tree.emplace(make_input(out.points, out.tetrahedra),
-                   parameters::bucket_size(settings_.bucket_size).geom_traits(gt_));
+      const Octree octree(make_input(out.points, out.tetrahedra),
+                          parameters::bucket_size(settings_.bucket_size).geom_traits(gt_));
       ++stats.optimization.rounds;
-      round(*tree, 0, out, Leaf_work::IMPROVE);
+      round(octree, 0, out, Leaf_work::IMPROVE);
     }
   }
 
