@@ -37,6 +37,7 @@ echo "sanitizer build ($scope): $(( $(date +%s) - start )) s"
 export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:exitcode=86:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:max_allocation_size_mb=2000:allocator_may_return_null=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:exitcode=86  # never the 1 or 2 of a refused input
 export PRSTAR_NO_PRLIMIT=1   # test_malformed: ASan bounds the allocations instead of prlimit
+export PRSTAR_SANITIZER_LIGHT=1  # test_simplification: the real meshes in the normal build only (CI time)
 cd build-asan
 if [ "$scope" = light ]; then
   # the meshes of the generated_meshes fixture: those of the normal build when it made them
