@@ -179,12 +179,7 @@ int run_remesh(const Options& o) {
     json_quality(j, "output_quality", q_out);
     json_edges(j, "input_edges", e_in);
     json_edges(j, "output_edges", e_out);
-    j.key("boundary_error").begin_object();
-    j.field("bound", s.max_boundary_error)
-        .field("input_to_output", d.input_to_output)
-        .field("output_to_input", d.output_to_input)
-        .field("relative", d.relative());
-    j.end_object();
+    json_boundary_error(j, d, s.max_boundary_error);
     j.field("output", out).end_object();
     std::cout << j.str() << '\n';
     return exit_success;

@@ -136,12 +136,7 @@ int run_simplify(const Options& o) {
     j.end_object();
     json_quality(j, "input_quality", q_in);
     json_quality(j, "output_quality", q_out);
-    j.key("boundary_error").begin_object();
-    j.field("bound", s.max_boundary_error)
-        .field("input_to_output", d.input_to_output)
-        .field("output_to_input", d.output_to_input)
-        .field("relative", d.relative());
-    j.end_object();
+    json_boundary_error(j, d, s.max_boundary_error);
     j.field("output", out).end_object();
     std::cout << j.str() << '\n';
     return status;

@@ -179,6 +179,16 @@ inline void quality_rows(Table& t, const CGAL::PR_star_octree::Mesh_quality& in,
 }
 
 /// The row "boundary distance (of diagonal)": the measured distance and the bound, in percent.
+// The "boundary_error" object of the JSON of simplify and remesh: the bound and the distances.
+inline void json_boundary_error(Json& j, const CGAL::PR_star_octree::Boundary_distance& d, double bound) {
+  j.key("boundary_error").begin_object();
+  j.field("bound", bound)
+      .field("input_to_output", d.input_to_output)
+      .field("output_to_input", d.output_to_input)
+      .field("relative", d.relative());
+  j.end_object();
+}
+
 inline void boundary_distance_row(Table& t, const CGAL::PR_star_octree::Boundary_distance& d, double bound) {
   t.add({"boundary distance (of diagonal)", "",
          fixed(100 * d.relative(), 3) + "% (bound " +
