@@ -1,0 +1,25 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+#include "vtkPRStarValidate.h"
+#include "vtkPRStarFilterRun.h"
+
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkUnstructuredGrid.h>
+
+vtkStandardNewMacro(vtkPRStarValidate);
+
+vtkPRStarValidate::vtkPRStarValidate() = default;
+vtkPRStarValidate::~vtkPRStarValidate() = default;
+
+int vtkPRStarValidate::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                   vtkInformationVector* outputVector) {
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  auto grid = this->WithGhostCells(input);
+  if (grid->GetNumberOfCells() == 0) {
+    return this->EmptyPiece(grid, output);
+  }
+  return this->Run(
+      output, [&](const prstar_paraview::Options& o) { return prstar_paraview::validate(grid, output, o); });
+}
