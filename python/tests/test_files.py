@@ -607,7 +607,7 @@ def test_write_options(cli, sample, tmp_path):
     prstar.write(source, sample)
     cases = [
         ("vtu", {"binary": False}, ["--ascii"], b'format="ascii"'),
-        ("vtu", {"compression": "none"}, ["--compression", "none"], b'format="appended"'),
+        ("vtu", {"compression": "none"}, ["--compression", "none"], b'format="binary"'),
         ("vtu", {}, [], b'compressor="vtkZLibDataCompressor"'),
         ("vtk", {"binary": True}, ["--binary"], b"\nBINARY\n"),
         ("vtk", {"version": 5.1}, ["--format-version", "5.1"], b"# vtk DataFile Version 5.1"),

@@ -234,7 +234,7 @@ tets_only = {
     "label": label[is_tet].tolist(), "quality": float(quality[is_tet].sum()),
 }
 source = os.path.join(work, "vtk_zlib_appended_UInt64_Int64_LittleEndian.vtu")
-for out, mode in (("ours_default.vtu", None), ("ours_ascii.vtu", "ascii"), ("ours_raw.vtu", "binary-none"),
+for out, mode in (("ours_default.vtu", None), ("ours_ascii.vtu", "ascii"), ("ours_uncompressed.vtu", "binary-none"),
                   ("ours_ascii.vtk", None), ("ours_binary.vtk", "binary"), ("ours_ascii_51.vtk", "ascii-5.1"),
                   ("ours_binary_51.vtk", "binary-5.1")):
     path = os.path.join(work, out)
@@ -245,10 +245,11 @@ for out, mode in (("ours_default.vtu", None), ("ours_ascii.vtu", "ascii"), ("our
     with open(path, "rb") as f:
         text = f.read()
     if out == "ours_default.vtu":
-        check(b'compressor="vtkZLibDataCompressor"' in text and b'encoding="raw"' in text,
-              f"{out}: not appended raw zlib")
-    if out == "ours_raw.vtu":
-        check(b"compressor=" not in text and b'encoding="raw"' in text, f"{out}: not appended raw uncompressed")
+        check(b'compressor="vtkZLibDataCompressor"' in text and b'format="binary"' in text
+              and b"<AppendedData" not in text, f"{out}: not inline base64 zlib")
+    if out == "ours_uncompressed.vtu":
+        check(b"compressor=" not in text and b'format="binary"' in text and b"<AppendedData" not in text,
+              f"{out}: not inline base64 uncompressed")
     if out.startswith("ours_binary"):
         check(b"\nBINARY\n" in text[:200], f"{out}: not a binary legacy file")
     if out.endswith("_51.vtk"):

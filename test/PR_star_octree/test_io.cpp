@@ -550,7 +550,7 @@ static void test_round_trips() {
     CHECK_EQUAL(r.tetrahedra, m.tetrahedra);
     CHECK_EQUAL(r.tetrahedron_labels, m.tetrahedron_labels);
   }
-  // VTU, ascii, appended raw and appended zlib (when available): everything, plus the extra array
+  // VTU, ascii, inline base64 and inline base64 zlib (when available): everything, plus the extra array
   for (int how : {0, 1, 2}) {
     if (how == 2 && !IO::internal::compression_available(IO::Compression::zlib)) continue;
     const std::string f = (tmp / ("rt" + std::to_string(how) + ".vtu")).string();

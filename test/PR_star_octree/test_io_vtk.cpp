@@ -731,7 +731,7 @@ static void test_vtu_writer() {
   };
   const std::vector<Case> cases = {
       {"default.vtu", [&](const std::string& f) { IO::write_vtu(f, m, extra); },
-       comp_available(Comp::ZLIB) ? "vtkZLibDataCompressor" : "format=\"appended\""},
+       comp_available(Comp::ZLIB) ? "vtkZLibDataCompressor" : "format=\"binary\""},
       {"ascii.vtu",
        [&](const std::string& f) { IO::write_vtu(f, m, extra, CGAL::parameters::use_binary_mode(false)); },
        "format=\"ascii\""},
@@ -739,8 +739,8 @@ static void test_vtu_writer() {
        [&](const std::string& f) {
          IO::write_vtu(f, m, extra, NP::compression(IO::Compression::none).use_binary_mode(true));
        },
-       "<AppendedData encoding=\"raw\">"},
-      {"ext.vtu", [&](const std::string& f) { IO::write_tetrahedral_mesh(f, m); }, "format=\"appended\""}};
+       "format=\"binary\">"},
+      {"ext.vtu", [&](const std::string& f) { IO::write_tetrahedral_mesh(f, m); }, "format=\"binary\""}};
   for (const Case& c : cases) {
     prstar_test::Failure_context context(std::string("VTU writer ") + c.name);
     const std::string f = (tmp / c.name).string();
@@ -748,6 +748,8 @@ static void test_vtu_writer() {
     std::ifstream in(f, std::ios::binary);
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     CHECK(text.find(c.must_contain) != std::string::npos);
+    // inline data only: VTK 9.1/9.2 read no appended data with Debian 12's current libexpat
+    CHECK(text.find("<AppendedData") == std::string::npos);
     Mesh r;
     IO::read_vtu(f, r);
     CHECK(r.points == m.points);

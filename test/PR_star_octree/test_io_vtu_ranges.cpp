@@ -326,9 +326,13 @@ void test_writer_files() {
         {std::uint32_t(v[0]), std::uint32_t(v[1]), std::uint32_t(v[2]), std::uint32_t(v[3])});
     m.tetrahedron_labels.push_back(int(c % 3) - 1);
   }
-  const std::string raw = (tmp_dir / "writer_raw.vtu").string();
-  IO::write_tetrahedral_mesh(raw, m, NP::compression(IO::Compression::none).use_binary_mode(true));
-  check_ranges(raw, "label", nullptr);
+  // The package's writer puts the data inline (base64, which VTK 9.1/9.2 read with any libexpat):
+  // such a file is read whole, not in ranges, and says why.
+  const std::string binary = (tmp_dir / "writer_binary.vtu").string();
+  IO::write_tetrahedral_mesh(binary, m, NP::compression(IO::Compression::none).use_binary_mode(true));
+  const Reader b(binary);
+  CHECK(!b.ranges_supported());
+  CHECK_MSG(b.reason().find("format=\"binary\"") != std::string::npos, b.reason());
 
   const std::string ascii = (tmp_dir / "writer_ascii.vtu").string();
   IO::write_tetrahedral_mesh(ascii, m, CGAL::parameters::use_binary_mode(false));
@@ -343,7 +347,7 @@ void test_writer_files() {
   IO::write_tetrahedral_mesh(zlib, m, NP::compression(IO::Compression::zlib).use_binary_mode(true));
   const Reader z(zlib);
   CHECK(!z.ranges_supported());
-  CHECK_MSG(z.reason().find("zlib-compressed") != std::string::npos, z.reason());
+  CHECK_MSG(z.reason().find("not appended") != std::string::npos, z.reason());
 #else
   prstar_test::skip("VTU ranges of a zlib-compressed file: zlib not found at build time");
 #endif

@@ -147,7 +147,9 @@ std::string shape_list() {
   for (const auto& shape : implicit_shapes()) s += "  " + shape.first + ": " + shape.second + '\n';
   s += "  lattice: with --cells N, a jittered N x N x N Kuhn lattice (6 N^3 tetrahedra, point array\n"
        "           `scalar`), in any format; to a .vtu it is streamed without holding the mesh (for\n"
-       "           huge inputs)\n";
+       "           huge inputs), as raw appended data, which MPI ranks read in byte ranges (VTK 9.1/9.2,\n"
+       "           ParaView 5.11, cannot read appended data with Debian 12's current libexpat:\n"
+       "           `prstar convert` it for them)\n";
   return s;
 }
 

@@ -94,7 +94,7 @@ inline constexpr Write_support surface_text_write_support{
 inline constexpr Write_support surface_binary_write_support{
     true, true, true, false, false, {nullptr, nullptr, nullptr, nullptr}, nullptr};
 /// VTK XML PolyData: the options of the `.vtu` writer (`vtu_write_support`, not included here to
-/// leave its reader out): appended raw binary (default) or ascii, zlib, version 1.0.
+/// leave its reader out): inline base64 binary (default) or ascii, zlib, version 1.0.
 inline constexpr Write_support vtp_write_support{
     true, true, true, true, true, {"1.0", nullptr, nullptr, nullptr}, nullptr};
 
@@ -469,7 +469,6 @@ void write_vtp_surface(std::ostream& out, const Surface& s, const Write_options&
                         [&](std::size_t i) { return std::int64_t(s.triangles[i / 3][i % 3]); });
   w.write<std::int64_t>("Int64", "offsets", 1, nt, [&](std::size_t i) { return std::int64_t(3 * (i + 1)); });
   buf += "      </Polys>\n    </Piece>\n  </PolyData>\n";
-  w.finish();
   buf += "</VTKFile>\n";
   flush_buffer(out, buf, name, true);
 }
@@ -565,7 +564,7 @@ void write_surface(std::ostream& out, const Surface& s, const std::string& exten
 /// `x y z`, the point arrays as `double` and `int` vertex properties, `list uchar int vertex_indices` and the
 /// triangle arrays as `int` face properties, label names as `comment label N name` | | `.obj` | Wavefront OBJ
 /// | `v`, `f` (1-based); label names as `# label N name`; `g NAME_VALUE` each time the value of the first
-/// triangle array changes | | `.vtp` | VTK XML PolyData, appended raw binary (default, zlib-compressed when
+/// triangle array changes | | `.vtp` | VTK XML PolyData, inline base64 binary (default, zlib-compressed when
 /// the build has zlib) or ascii | the arrays by name (`Float64`, `Int32`), `Float64` points, `Int64`
 /// polygons; label names as the field data `label_ids` and `label_names` (ascii) | | `.mesh` | Medit ASCII,
 /// version 2 | `Vertices` (reference 0), `Triangles` (1-based) with the first triangle array as references

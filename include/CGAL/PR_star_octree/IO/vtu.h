@@ -81,7 +81,7 @@ void read_vtu(const std::string& filename, Mesh& mesh) {
 
 namespace internal {
 
-/// What the VTK XML writer accepts: binary (appended raw data, default) or ascii, zlib compression
+/// What the VTK XML writer accepts: binary (inline base64 data, default) or ascii, zlib compression
 /// (default when the build has zlib), version 1.0.
 inline constexpr Write_support vtu_write_support{
     true, true, true, true, true, {"1.0", nullptr, nullptr, nullptr}, nullptr};
@@ -132,7 +132,6 @@ void write_vtu_stream(std::ostream& out, const Mesh& mesh, const std::vector<Dat
   w.write<std::int64_t>("Int64", "offsets", 1, nt, [&](std::size_t i) { return std::int64_t(4 * (i + 1)); });
   w.write<std::uint8_t>("UInt8", "types", 1, nt, [](std::size_t) { return std::uint8_t(10); });
   buf += "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n";
-  w.finish();
   buf += "</VTKFile>\n";
   flush_buffer(out, buf, name, true);
 }
@@ -158,10 +157,13 @@ void write_vtu_file(const std::string& filename, const Mesh& mesh,
 /// `Int32` `CellData` array `label` (the active cell scalars), then the cell-data arrays of the
 /// mesh as `Float64` `CellData`.
 ///
-/// By default the arrays are appended raw binary data compressed with zlib as ParaView writes them
-/// (`compressor="vtkZLibDataCompressor"`, blocks of 32 KiB; uncompressed when the build has no
-/// zlib); with `use_binary_mode(false)` they are written in ascii with the shortest decimal form
-/// that reads back exactly.  Both are exact.
+/// By default the arrays are binary, compressed with zlib (`compressor="vtkZLibDataCompressor"`,
+/// blocks of 32 KiB; uncompressed when the build has no zlib) and base64-encoded inline
+/// (`format="binary"`), as VTK writes them in its binary data mode; with `use_binary_mode(false)`
+/// they are written in ascii with the shortest decimal form that reads back exactly.  Both are
+/// exact.  The data are inline rather than appended because the VTK 9.1/9.2 of Debian 12
+/// (ParaView 5.11 included) cannot read appended data, raw or base64, with the libexpat of Debian
+/// 12's current point releases; inline data are read by every VTK version and by meshio.
 ///
 /// \tparam NamedParameters a sequence of named parameters
 /// \param out the stream
@@ -170,7 +172,7 @@ void write_vtu_file(const std::string& filename, const Mesh& mesh,
 /// \param np the write options (`Write_options.h`)
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{use_binary_mode}
-///     \cgalParamDescription{binary (`true`: appended raw data, in the machine's byte order) or
+///     \cgalParamDescription{binary (`true`: inline base64 data, little-endian) or
 ///       ascii (`false`)}
 ///     \cgalParamType{Boolean}
 ///     \cgalParamDefault{`true`}

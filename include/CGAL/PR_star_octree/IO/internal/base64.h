@@ -132,10 +132,28 @@ public:
   explicit Base64_encoder(std::string& out) : out_(out) {}
 
   void write(const unsigned char* data, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) {
-      buf_[len_++] = data[i];
+    std::size_t i = 0;
+    while (len_ != 0 && i < n) { // complete the pending group first
+      buf_[len_++] = data[i++];
       if (len_ == 3) emit();
     }
+    // whole groups straight to the output
+    const std::size_t groups = (n - i) / 3;
+    if (groups != 0) {
+      static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+      std::size_t at = out_.size();
+      out_.resize(at + 4 * groups);
+      char* o = &out_[at];
+      for (std::size_t g = 0; g < groups; ++g, i += 3, o += 4) {
+        const std::uint32_t bits =
+            (std::uint32_t(data[i]) << 16) | (std::uint32_t(data[i + 1]) << 8) | std::uint32_t(data[i + 2]);
+        o[0] = alphabet[(bits >> 18) & 63];
+        o[1] = alphabet[(bits >> 12) & 63];
+        o[2] = alphabet[(bits >> 6) & 63];
+        o[3] = alphabet[bits & 63];
+      }
+    }
+    for (; i < n; ++i) buf_[len_++] = data[i]; // at most 2 left
   }
   void finish() {
     if (len_ == 0) return;

@@ -8,7 +8,7 @@
 
 // A distributed mesh as VTK XML files: one `.vtu` piece per part (e.g. per MPI rank, each written
 // by its own process) and the `.pvtu` that lists them, with VTK's ghost and global-id arrays.  No
-// MPI here: the caller decides who writes what.  The pieces are written as appended raw binary
+// MPI here: the caller decides who writes what.  The pieces are written as inline base64 binary
 // data streamed through a small buffer (a piece can be gigabytes: nothing is copied whole), every
 // file through a temporary name renamed at the end.
 
@@ -25,6 +25,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <string>
 #include <system_error>
@@ -139,9 +140,10 @@ inline void pvtu_section_attributes(std::string& buf, Pvtu_array::Section sectio
   }
 }
 
-/// `<DataArray .../>` or `<PDataArray .../>` of `a` (with its offset when `offset` is not null).
+/// `<DataArray ...>` (`format="binary"`, left open for the data when `inline_data`) or
+/// `<PDataArray .../>` of `a`.
 inline void pvtu_array_element(std::string& buf, const Pvtu_array& a, const char* indent, const char* tag,
-                               const std::uint64_t* offset) {
+                               bool inline_data) {
   buf += indent;
   buf += '<';
   buf += tag;
@@ -156,21 +158,18 @@ inline void pvtu_array_element(std::string& buf, const Pvtu_array& a, const char
     append_integer(buf, a.components);
     buf += '"';
   }
-  if (offset != nullptr) {
-    buf += " format=\"appended\" offset=\"";
-    append_integer(buf, *offset);
-    buf += '"';
-  }
-  buf += "/>\n";
+  buf += inline_data ? " format=\"binary\">\n" : "/>\n";
 }
 
-/// The section elements and their arrays, from `arrays` (in file order); `P` prefix for `.pvtu`.
+/// The section elements and their arrays, from `arrays` (in file order): for a piece, each
+/// `DataArray` with its data written by `write_data(a)`; for the `.pvtu` (`write_data` null), the
+/// `PDataArray`s.
 inline void pvtu_sections(std::string& buf, const std::vector<Pvtu_array>& arrays, const Vtu_piece& p,
-                          bool parallel) {
+                          const std::function<void(const Pvtu_array&)>* write_data) {
   static const char* const names[] = {"PointData", "CellData", "Points", "Cells"};
+  const bool parallel = write_data == nullptr;
   const char* indent = parallel ? "      " : "        ";
   const std::string prefix = parallel ? "P" : "";
-  std::uint64_t offset = 0;
   for (int s = Pvtu_array::point_data; s <= Pvtu_array::cells; ++s) {
     const auto section = static_cast<Pvtu_array::Section>(s);
     if (parallel && section == Pvtu_array::cells) break; // the .pvtu has no PCells
@@ -183,8 +182,12 @@ inline void pvtu_sections(std::string& buf, const std::vector<Pvtu_array>& array
     buf += ">\n";
     for (const Pvtu_array& a : arrays) {
       if (a.section != section) continue;
-      pvtu_array_element(buf, a, indent, parallel ? "PDataArray" : "DataArray", parallel ? nullptr : &offset);
-      offset += 8 + std::uint64_t(a.values) * a.value_size;
+      pvtu_array_element(buf, a, indent, parallel ? "PDataArray" : "DataArray", !parallel);
+      if (!parallel) {
+        buf += "          ";
+        (*write_data)(a);
+        buf += "\n        </DataArray>\n";
+      }
     }
     buf += parallel ? "    </" : "      </";
     buf += prefix + names[s];
@@ -230,18 +233,22 @@ void pvtu_write_through_temporary(const std::string& file, const Write& write) {
   }
 }
 
-/// Writes `n` values of `T` made by `get(i)` through `buf` (flushed every 64 KiB).
+/// Writes `n` values of `T` made by `get(i)` (in the host's byte order) to `stream`.
 template <class T, class Get>
-void pvtu_stream_values(std::ofstream& out, std::string& buf, std::size_t n, const std::string& file,
-                        const Get& get) {
-  for (std::size_t i = 0; i < n; ++i) {
-    append_binary<T>(buf, get(i));
-    flush_buffer(out, buf, file);
+void pvtu_stream_values(Vtu_base64_stream& stream, std::size_t n, const Get& get) {
+  std::string chunk;
+  chunk.reserve(std::size_t(1) << 15);
+  for (std::size_t i = 0; i < n;) {
+    chunk.clear();
+    const std::size_t end = std::min(n, i + (std::size_t(1) << 15) / sizeof(T));
+    for (; i < end; ++i) append_binary<T>(chunk, get(i));
+    stream.write(chunk.data(), chunk.size());
   }
 }
 
 /// Writes one piece of a distributed mesh as a VTK XML unstructured grid (version 1.0,
-/// `header_type="UInt64"`, the byte order of this machine, appended raw binary data): `Float64`
+/// `header_type="UInt64"`, the byte order of this machine, inline base64 binary data as
+/// `Vtu_array_writer` writes them, one stream per array): `Float64`
 /// points, `Int64` connectivity and offsets, `UInt8` types (10); `PointData`: `GlobalPointIds`
 /// (`Int64`, the `GlobalIds` attribute), `vtkGhostType` (`UInt8`), the `Float64` point arrays;
 /// `CellData`: `GlobalCellIds` (`Int64`, `GlobalIds`), `vtkGhostType` (`UInt8`), the labels
@@ -279,36 +286,31 @@ inline void write_vtu_piece(const std::string& file, const Vtu_piece& piece) {
     buf += "\" NumberOfCells=\"";
     append_integer(buf, nt);
     buf += "\">\n";
-    pvtu_sections(buf, arrays, piece, false);
-    buf += "    </Piece>\n  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _";
-    for (const Pvtu_array& a : arrays) {
-      append_binary<std::uint64_t>(buf, std::uint64_t(a.values) * a.value_size);
+    const std::function<void(const Pvtu_array&)> write_data = [&](const Pvtu_array& a) {
+      Vtu_base64_stream stream(out, buf, file);
+      std::string header;
+      append_binary<std::uint64_t>(header, std::uint64_t(a.values) * a.value_size);
+      stream.write(header.data(), header.size());
       switch (a.source) {
-      case Pvtu_array::raw: { // the caller's bytes, as they are (the host's byte order)
-        flush_buffer(out, buf, file, true);
-        const char* bytes = static_cast<const char*>(a.data);
-        const std::size_t total = a.values * a.value_size, slice = std::size_t(1) << 24;
-        for (std::size_t done = 0; done < total; done += slice) {
-          out.write(bytes + done, static_cast<std::streamsize>(std::min(slice, total - done)));
-          if (!out) throw Write_error(file, "error while writing");
-        }
+      case Pvtu_array::raw: // the caller's bytes, as they are (the host's byte order)
+        stream.write(static_cast<const char*>(a.data), a.values * a.value_size);
         break;
-      }
       case Pvtu_array::connectivity:
-        pvtu_stream_values<std::int64_t>(out, buf, a.values, file,
+        pvtu_stream_values<std::int64_t>(stream, a.values,
                                          [&](std::size_t i) { return std::int64_t(piece.tetrahedra[i]); });
         break;
       case Pvtu_array::offsets:
-        pvtu_stream_values<std::int64_t>(out, buf, a.values, file,
+        pvtu_stream_values<std::int64_t>(stream, a.values,
                                          [](std::size_t i) { return std::int64_t(4 * (i + 1)); });
         break;
       case Pvtu_array::types:
-        pvtu_stream_values<std::uint8_t>(out, buf, a.values, file,
-                                         [](std::size_t) { return std::uint8_t(10); });
+        pvtu_stream_values<std::uint8_t>(stream, a.values, [](std::size_t) { return std::uint8_t(10); });
         break;
       }
-    }
-    buf += "\n  </AppendedData>\n</VTKFile>\n";
+      stream.finish();
+    };
+    pvtu_sections(buf, arrays, piece, &write_data);
+    buf += "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
     flush_buffer(out, buf, file, true);
   });
 }
@@ -334,7 +336,7 @@ inline void write_pvtu(const std::string& file, const std::vector<std::string>& 
     buf += "\" header_type=\"UInt64\">\n  <PUnstructuredGrid GhostLevel=\"";
     buf += layout.point_ghosts != nullptr || layout.cell_ghosts != nullptr ? '1' : '0';
     buf += "\">\n";
-    pvtu_sections(buf, arrays, p, true);
+    pvtu_sections(buf, arrays, p, nullptr);
     for (const std::string& s : piece_files) {
       buf += "    <Piece Source=\"";
       xml_escape(buf, s);

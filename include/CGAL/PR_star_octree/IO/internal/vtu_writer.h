@@ -9,10 +9,12 @@
 // The VTK XML UnstructuredGrid (.vtu) writer: escaping and data arrays.
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/internal/base64.h>
 #include <CGAL/PR_star_octree/IO/internal/decompress.h>
 #include <CGAL/PR_star_octree/IO/internal/file_bytes.h>
 #include <CGAL/PR_star_octree/IO/internal/text.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -60,90 +62,58 @@ void vtu_write_ascii_array(std::ostream& out, std::string& buf, const std::strin
   flush_buffer(out, buf, file);
 }
 
-/// The appended form (as ParaView writes): `header_type="UInt64"`, raw binary data, each array
-/// in blocks of 32 KiB compressed by zlib (`vtkZLibDataCompressor`) when `zlib`, else in one piece.
-class Vtu_appended_arrays {
+/// Streams bytes as one base64 stream into `buf`, flushed to `out` every 64 KiB.
+class Vtu_base64_stream {
+public:
+  Vtu_base64_stream(std::ostream& out, std::string& buf, const std::string& file)
+      : out_(out), buf_(buf), file_(file), enc_(buf) {}
+  void write(const char* bytes, std::size_t n) {
+    constexpr std::size_t slice = std::size_t(3) << 14; // 48 KiB of bytes, 64 KiB of text
+    for (std::size_t done = 0; done < n; done += slice) {
+      enc_.write(reinterpret_cast<const unsigned char*>(bytes + done), std::min(slice, n - done));
+      flush_buffer(out_, buf_, file_);
+    }
+  }
+  void write_word(std::uint64_t w) { // little-endian
+    char b[8];
+    for (int i = 0; i < 8; ++i) b[i] = static_cast<char>(static_cast<unsigned char>(w >> (8 * i)));
+    write(b, 8);
+  }
+  /// Pads the end of the stream (the next write starts a new stream).
+  void finish() { enc_.finish(); }
+
+private:
+  std::ostream& out_;
+  std::string& buf_;
+  const std::string& file_;
+  Base64_encoder enc_;
+};
+
+/// Appends value `v` to `dst` in little-endian byte order.
+template <class T>
+void vtu_append_little_endian(std::string& dst, T v) {
+  unsigned char b[sizeof(T)];
+  std::memcpy(b, &v, sizeof(T));
+  if (!host_is_little_endian())
+    for (std::size_t k = 0; k < sizeof(T) / 2; ++k) std::swap(b[k], b[sizeof(T) - 1 - k]);
+  dst.append(reinterpret_cast<const char*>(b), sizeof(T));
+}
+
+/// Writes the DataArray elements, ascii or binary.  Binary data are written inline
+/// (`format="binary"`), base64-encoded, with `UInt64` headers, as VTK's writers do in their binary
+/// data mode: uncompressed, the byte count and the data as one base64 stream; compressed by zlib
+/// (`vtkZLibDataCompressor`, blocks of 32 KiB), the block header as one stream and the compressed
+/// blocks as another.  Not the appended form: VTK 9.1/9.2 (ParaView 5.11, Debian 12's VTK) read no
+/// appended data, raw or base64, with the libexpat of Debian 12's current point releases (its
+/// reparse deferral), while inline data are read by every VTK version.  Uncompressed data are
+/// streamed; compressed ones are held in memory one array at a time.
+class Vtu_array_writer {
 public:
   static constexpr std::size_t block_size = 32768;
 
-  Vtu_appended_arrays(bool zlib, int level) : zlib_(zlib), level_(level) {}
-
-  bool compressed() const { return zlib_; }
-
-  /// Adds one array (`get(i)` is value `i`, of `count`, as `T`); returns its offset.
-  template <class T, class Get>
-  std::size_t add(std::size_t count, const Get& get, const std::string& file) {
-    (void)file; // for the error message of a failed compression
-    const std::size_t offset = data_.size();
-    const std::uint64_t nbytes = static_cast<std::uint64_t>(count) * sizeof(T);
-    const bool swap = !host_is_little_endian();
-    std::string raw;
-    raw.reserve(compressed() ? block_size : static_cast<std::size_t>(nbytes));
-    const auto put_word = [&](std::string& dst, std::uint64_t w) {
-      unsigned char b[8];
-      for (int i = 0; i < 8; ++i) b[i] = static_cast<unsigned char>(w >> (8 * i)); // little-endian
-      dst.append(reinterpret_cast<const char*>(b), 8);
-    };
-    if (!compressed()) {
-      put_word(data_, nbytes);
-      for (std::size_t i = 0; i < count; ++i) append_value(data_, get(i), swap);
-      return offset;
-    }
-#ifndef CGAL_PR_STAR_OCTREE_HAS_ZLIB
-    throw Write_error(file,
-                      "zlib compression is not available: zlib was not found when this program was built");
-#else
-    const std::size_t nb = static_cast<std::size_t>((nbytes + block_size - 1) / block_size);
-    std::string blocks;
-    std::vector<std::uint64_t> sizes;
-    sizes.reserve(nb);
-    std::size_t i = 0;
-    const std::size_t per_block = block_size / sizeof(T);
-    static_assert(block_size % 8 == 0, "whole values per block");
-    while (i < count) {
-      raw.clear();
-      const std::size_t end = std::min(count, i + per_block);
-      for (; i < end; ++i) append_value(raw, get(i), swap);
-      const std::size_t before = blocks.size();
-      if (!zlib_compress_append(reinterpret_cast<const unsigned char*>(raw.data()), raw.size(), level_,
-                                blocks))
-        throw Write_error(file, "zlib compression failed");
-      sizes.push_back(blocks.size() - before);
-    }
-    put_word(data_, sizes.size());
-    put_word(data_, block_size);
-    put_word(data_, nbytes % block_size);
-    for (std::uint64_t c : sizes) put_word(data_, c);
-    data_ += blocks;
-#endif
-    return offset;
-  }
-
-  const std::string& data() const {
-    return data_;
-  }
-
-private:
-  template <class T>
-  static void append_value(std::string& dst, T v, bool swap) {
-    unsigned char b[sizeof(T)];
-    std::memcpy(b, &v, sizeof(T));
-    if (swap)
-      for (std::size_t k = 0; k < sizeof(T) / 2; ++k) std::swap(b[k], b[sizeof(T) - 1 - k]);
-    dst.append(reinterpret_cast<const char*>(b), sizeof(T));
-  }
-
-  bool zlib_;
-  int level_;
-  std::string data_;
-};
-
-/// Writes the DataArray elements, ascii or appended (the appended data at the end).
-class Vtu_array_writer {
-public:
   Vtu_array_writer(std::ostream& out, std::string& buf, const std::string& file, bool binary, bool zlib,
                    int level = 1)
-      : out_(out), buf_(buf), file_(file), binary_(binary), appended_(zlib, level) {}
+      : out_(out), buf_(buf), file_(file), binary_(binary), zlib_(zlib), level_(level) {}
 
   template <class T, class Get>
   void write(const char* vtk_type, const std::string& array_name, std::size_t components, std::size_t count,
@@ -152,7 +122,6 @@ public:
       vtu_write_ascii_array<T>(out_, buf_, file_, vtk_type, array_name, components, count, get);
       return;
     }
-    const std::size_t offset = appended_.add<T>(count, get, file_);
     buf_ += "        <DataArray type=\"";
     buf_ += vtk_type;
     buf_ += '"';
@@ -166,33 +135,64 @@ public:
       append_integer(buf_, components);
       buf_ += '"';
     }
-    buf_ += " format=\"appended\" offset=\"";
-    append_integer(buf_, offset);
-    buf_ += "\"/>\n";
+    buf_ += " format=\"binary\">\n          ";
+    const std::uint64_t nbytes = static_cast<std::uint64_t>(count) * sizeof(T);
+    Vtu_base64_stream stream(out_, buf_, file_);
+    std::string raw;
+    raw.reserve(block_size);
+    const std::size_t per_block = block_size / sizeof(T);
+    static_assert(block_size % 8 == 0, "whole values per block");
+    if (!zlib_) {
+      stream.write_word(nbytes);
+      for (std::size_t i = 0; i < count;) {
+        raw.clear();
+        const std::size_t end = std::min(count, i + per_block);
+        for (; i < end; ++i) vtu_append_little_endian<T>(raw, get(i));
+        stream.write(raw.data(), raw.size());
+      }
+      stream.finish();
+    } else {
+#ifndef CGAL_PR_STAR_OCTREE_HAS_ZLIB
+      throw Write_error(file_,
+                        "zlib compression is not available: zlib was not found when this program was built");
+#else
+      std::string blocks;
+      std::vector<std::uint64_t> sizes;
+      sizes.reserve(static_cast<std::size_t>((nbytes + block_size - 1) / block_size));
+      for (std::size_t i = 0; i < count;) {
+        raw.clear();
+        const std::size_t end = std::min(count, i + per_block);
+        for (; i < end; ++i) vtu_append_little_endian<T>(raw, get(i));
+        const std::size_t before = blocks.size();
+        if (!zlib_compress_append(reinterpret_cast<const unsigned char*>(raw.data()), raw.size(), level_,
+                                  blocks))
+          throw Write_error(file_, "zlib compression failed");
+        sizes.push_back(blocks.size() - before);
+      }
+      stream.write_word(sizes.size());
+      stream.write_word(block_size);
+      stream.write_word(nbytes % block_size);
+      for (std::uint64_t c : sizes) stream.write_word(c);
+      stream.finish();
+      stream.write(blocks.data(), blocks.size());
+      stream.finish();
+#endif
+    }
+    buf_ += "\n        </DataArray>\n";
+    flush_buffer(out_, buf_, file_);
   }
 
   /// the `compressor` attribute of `<VTKFile>` (with its leading space), possibly empty
   const char* compressor_attribute() const {
-    return binary_ && appended_.compressed() ? " compressor=\"vtkZLibDataCompressor\"" : "";
-  }
-
-  /// Writes what follows `</UnstructuredGrid>`: the appended data, if any.
-  void finish() {
-    if (!binary_) return;
-    buf_ += "  <AppendedData encoding=\"raw\">\n   _";
-    flush_buffer(out_, buf_, file_, true);
-    const std::string& d = appended_.data();
-    out_.write(d.data(), static_cast<std::streamsize>(d.size()));
-    if (!out_) throw Write_error(file_, "error while writing");
-    buf_ += "\n  </AppendedData>\n";
+    return binary_ && zlib_ ? " compressor=\"vtkZLibDataCompressor\"" : "";
   }
 
 private:
   std::ostream& out_;
   std::string& buf_;
   const std::string& file_;
-  bool binary_;
-  Vtu_appended_arrays appended_;
+  bool binary_, zlib_;
+  int level_;
 };
 
 } // namespace internal
