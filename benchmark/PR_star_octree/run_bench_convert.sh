@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # The series of results/convert.md: `prstar convert` and `prstar info` against meshio (Python) on a
-# generated lattice, whole processes timed by farm-bench (median of 3 after a warm-up, peak RSS).
+# generated lattice, whole processes timed by GNU time (median of 3 after a warm-up, the two
+# commands of a pair alternated run by run; peak RSS).
 #
 #   benchmark/PR_star_octree/run_bench_convert.sh BUILD_DIR WORK_DIR [CELLS]
 #
 # CELLS: the lattice size (default 120: 10.4M tetrahedra, a 460 MB appended-raw .vtu).  Needs
-# farm-bench (this workplace's timer) and python3-meshio; run it on a quiet machine.
+# /usr/bin/time (Debian package `time`) and python3-meshio; run it on a quiet machine.
 set -euo pipefail
 build=${1:?build directory}
 work=${2:?work directory}
@@ -19,13 +20,36 @@ import sys, meshio
 m = meshio.read(sys.argv[1])
 meshio.write(sys.argv[2], m, file_format=sys.argv[3], binary=True)
 PY
+# The median of the values on stdin, one a line.
+median() { sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
+# Runs each command (one string each, split as the shell splits words) once as a warm-up, then 3
+# times, the commands alternated; prints each one's median wall seconds and peak RSS.
+timed() {
+  local i c runs=3
+  for c in "$@"; do $c > /dev/null 2>&1 || { echo "failed: $c" >&2; return 1; }; done
+  for ((i = 0; i < runs; ++i)); do
+    local k=0
+    for c in "$@"; do
+      /usr/bin/time -f "%e %M" -o "$work/time_$k.$i" $c > /dev/null 2>&1
+      k=$((k + 1))
+    done
+  done
+  local k=0
+  for c in "$@"; do
+    local wall peak
+    wall=$(cat "$work"/time_$k.* | cut -d' ' -f1 | median)
+    peak=$(cat "$work"/time_$k.* | cut -d' ' -f2 | median)
+    printf '  %s\n    median wall %s s, peak %s MiB\n' "$c" "$wall" "$((peak / 1024))"
+    rm -f "$work"/time_$k.*
+    k=$((k + 1))
+  done
+}
 echo "machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), $(date -u +%FT%TZ)"
 for target in msh:gmsh vtk:vtk; do
   ext=${target%%:*} fmt=${target#*:}
-  echo "== .vtu -> .$ext (binary): prstar convert (A) against meshio (B)"
-  farm-bench -n 3 --timeout 1500 \
-    --vs "/usr/bin/python3 $work/meshio_convert.py $mesh $work/meshio.$ext $fmt" \
-    -- "$prstar" convert "$mesh" "$work/prstar.$ext" --binary --force --quiet
+  echo "== .vtu -> .$ext (binary): prstar convert against meshio"
+  timed "$prstar convert $mesh $work/prstar.$ext --binary --force --quiet" \
+        "/usr/bin/python3 $work/meshio_convert.py $mesh $work/meshio.$ext $fmt"
 done
 echo "== prstar info (orientation and shape of every tetrahedron)"
-farm-bench -n 3 --timeout 600 -- "$prstar" info "$mesh" --json
+timed "$prstar info $mesh --json"
