@@ -25,16 +25,7 @@ namespace {
 
 // 0 interior, 1 boundary, 2 non-manifold, 3 in no tetrahedron: the codes of `prstar boundary`
 std::uint8_t vertex_code(PSO::Vertex_type t) {
-  switch (t) {
-  case PSO::Vertex_type::INTERIOR:
-    return 0;
-  case PSO::Vertex_type::BOUNDARY:
-    return 1;
-  case PSO::Vertex_type::NONMANIFOLD:
-    return 2;
-  default:
-    return 3;
-  }
+  return static_cast<std::uint8_t>(PSO::vertex_type_code(t));
 }
 
 struct Code_map { // WritablePropertyMap: user vertex -> code

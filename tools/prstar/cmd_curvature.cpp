@@ -5,7 +5,7 @@
 
 #include "commands.h"
 #include "octree_mesh_view.h"
-#include "vertex_code.h"
+#include <CGAL/PR_star_octree/boundary.h>
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/distortion.h>

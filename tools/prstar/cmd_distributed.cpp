@@ -8,7 +8,7 @@
 // writes one file as one process would.  Built only with MPI.
 
 #include "commands.h"
-#include "vertex_code.h"
+#include <CGAL/PR_star_octree/boundary.h>
 
 #include <CGAL/PR_star_octree/Distributed_octree_3.h>
 #include <CGAL/PR_star_octree/IO/distributed.h>

@@ -62,7 +62,7 @@ struct Value_summary {
   double mean() const { return sum.value() / double(count); }
 };
 
-/// What curvature reports: the vertices of each type (the codes of vertex_code.h: interior,
+/// What curvature reports: the vertices of each type (the codes of `vertex_type_code()`: interior,
 /// boundary, non-manifold, unreferenced) and, for the interior and the boundary ones, the
 /// distortion and the domain's concentrated curvature.  Trivially copyable (gathered over ranks).
 struct Curvature_summary {

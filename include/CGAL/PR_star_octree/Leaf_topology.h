@@ -57,6 +57,23 @@ enum class Vertex_type : unsigned char {
   NONMANIFOLD = 3   ///< link is neither (pinched vertex, non-manifold edge or face, several sheets)
 };
 
+/// \ingroup PkgPRStarOctreeRef
+/// The integer code of a vertex type in the files and arrays the package's tools write (the point
+/// array `boundary` of `prstar boundary`, the Python module, the ParaView plugin): 0 interior,
+/// 1 boundary, 2 non-manifold, 3 in no tetrahedron.
+inline int vertex_type_code(Vertex_type t) {
+  switch (t) {
+  case Vertex_type::INTERIOR:
+    return 0;
+  case Vertex_type::BOUNDARY:
+    return 1;
+  case Vertex_type::NONMANIFOLD:
+    return 2;
+  default:
+    return 3;
+  }
+}
+
 static_assert(static_cast<int>(Vertex_type::UNREFERENCED) == static_cast<int>(internal::Link_kind::EMPTY) &&
                   static_cast<int>(Vertex_type::INTERIOR) == static_cast<int>(internal::Link_kind::CLOSED) &&
                   static_cast<int>(Vertex_type::BOUNDARY) == static_cast<int>(internal::Link_kind::OPEN) &&

@@ -228,16 +228,7 @@ std::unique_ptr<Octree> make_octree(const Grid_input& input, const Options& o, N
 }
 
 std::uint8_t vertex_code(PSO::Vertex_type t) {
-  switch (t) {
-  case PSO::Vertex_type::INTERIOR:
-    return 0;
-  case PSO::Vertex_type::BOUNDARY:
-    return 1;
-  case PSO::Vertex_type::NONMANIFOLD:
-    return 2;
-  default:
-    return 3;
-  }
+  return static_cast<std::uint8_t>(PSO::vertex_type_code(t));
 }
 
 struct Code_map { // WritablePropertyMap: grid point -> code of `prstar boundary`
