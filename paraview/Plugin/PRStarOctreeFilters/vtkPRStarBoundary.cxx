@@ -24,16 +24,10 @@ void vtkPRStarBoundary::PrintSelf(ostream& os, vtkIndent indent) {
 
 int vtkPRStarBoundary::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                    vtkInformationVector* outputVector) {
-  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
-  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
   vtkPolyData* surface = vtkPolyData::GetData(outputVector, 1);
-  auto grid = this->WithGhostCells(input);
-  if (grid->GetNumberOfCells() == 0) {
-    return this->EmptyPiece(grid, output);
-  }
-  return this->Run(output, [&](const prstar_paraview::Options& base) {
-    prstar_paraview::Options o = base;
-    o.labels = this->Labels(grid);
-    return prstar_paraview::boundary(grid, output, this->GenerateSurface ? surface : nullptr, o);
-  });
+  return this->RunOnGhostedInput(
+      inputVector, outputVector, true,
+      [&](vtkUnstructuredGrid* grid, vtkUnstructuredGrid* output, const prstar_paraview::Options& o) {
+        return prstar_paraview::boundary(grid, output, this->GenerateSurface ? surface : nullptr, o);
+      });
 }

@@ -24,17 +24,11 @@ void vtkPRStarCriticalPoints::PrintSelf(ostream& os, vtkIndent indent) {
 
 int vtkPRStarCriticalPoints::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                          vtkInformationVector* outputVector) {
-  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
-  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
   vtkPolyData* points = vtkPolyData::GetData(outputVector, 1);
-  auto grid = this->WithGhostCells(input);
-  if (grid->GetNumberOfCells() == 0) {
-    return this->EmptyPiece(grid, output);
-  }
-  return this->Run(output, [&](const prstar_paraview::Options& base) {
-    prstar_paraview::Options o = base;
-    o.labels = this->Labels(grid);
-    vtkDataArray* field = FieldArray(grid, this->FieldArrayName);
-    return prstar_paraview::critical_points(grid, field, output, points, o);
-  });
+  return this->RunOnGhostedInput(
+      inputVector, outputVector, true,
+      [&](vtkUnstructuredGrid* grid, vtkUnstructuredGrid* output, const prstar_paraview::Options& o) {
+        vtkDataArray* field = FieldArray(grid, this->FieldArrayName);
+        return prstar_paraview::critical_points(grid, field, output, points, o);
+      });
 }

@@ -19,16 +19,10 @@ void vtkPRStarCurvature::PrintSelf(ostream& os, vtkIndent indent) {
 
 int vtkPRStarCurvature::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                     vtkInformationVector* outputVector) {
-  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
-  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
-  auto grid = this->WithGhostCells(input);
-  if (grid->GetNumberOfCells() == 0) {
-    return this->EmptyPiece(grid, output);
-  }
-  return this->Run(output, [&](const prstar_paraview::Options& base) {
-    prstar_paraview::Options o = base;
-    o.labels = this->Labels(grid);
-    vtkDataArray* field = FieldArray(grid, this->FieldArrayName);
-    return prstar_paraview::curvature(grid, field, output, o);
-  });
+  return this->RunOnGhostedInput(
+      inputVector, outputVector, true,
+      [&](vtkUnstructuredGrid* grid, vtkUnstructuredGrid* output, const prstar_paraview::Options& o) {
+        vtkDataArray* field = FieldArray(grid, this->FieldArrayName);
+        return prstar_paraview::curvature(grid, field, output, o);
+      });
 }

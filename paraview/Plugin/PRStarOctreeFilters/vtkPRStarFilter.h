@@ -69,6 +69,12 @@ protected:
   /// one-line `summary`; returns 1 on success, 0 on failure.
   template <class F>
   int Run(vtkDataObject* output, F&& work);
+  /// The RequestData of a filter on its input grid with ghost cells (`WithGhostCells`): an empty
+  /// piece is passed through; otherwise `work(grid, output, options)` runs through `Run`, the
+  /// options with the label array (`Labels`) when `labels`.
+  template <class F>
+  int RunOnGhostedInput(vtkInformationVector** inputVector, vtkInformationVector* outputVector, bool labels,
+                        F&& work);
 
   int BucketSize = 50;
   int NumberOfThreads = 0;

@@ -11,8 +11,10 @@
 #include <vtkDataObject.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkInformationVector.h>
 #include <vtkNew.h>
 #include <vtkStringArray.h>
+#include <vtkUnstructuredGrid.h>
 
 #include <chrono>
 #include <exception>
@@ -47,6 +49,24 @@ int vtkPRStarFilter::Run(vtkDataObject* output, F&& work) {
   }
   this->UpdateProgress(1);
   return 1;
+}
+
+template <class F>
+int vtkPRStarFilter::RunOnGhostedInput(vtkInformationVector** inputVector, vtkInformationVector* outputVector,
+                                       bool labels, F&& work) {
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  vtkSmartPointer<vtkUnstructuredGrid> grid = this->WithGhostCells(input);
+  if (grid->GetNumberOfCells() == 0) {
+    return this->EmptyPiece(grid, output);
+  }
+  return this->Run(output, [&](const prstar_paraview::Options& base) {
+    prstar_paraview::Options o = base;
+    if (labels) {
+      o.labels = this->Labels(grid);
+    }
+    return work(grid.GetPointer(), output, o);
+  });
 }
 
 #endif

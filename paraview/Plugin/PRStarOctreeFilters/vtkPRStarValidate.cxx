@@ -14,12 +14,9 @@ vtkPRStarValidate::~vtkPRStarValidate() = default;
 
 int vtkPRStarValidate::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                    vtkInformationVector* outputVector) {
-  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
-  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
-  auto grid = this->WithGhostCells(input);
-  if (grid->GetNumberOfCells() == 0) {
-    return this->EmptyPiece(grid, output);
-  }
-  return this->Run(
-      output, [&](const prstar_paraview::Options& o) { return prstar_paraview::validate(grid, output, o); });
+  return this->RunOnGhostedInput(
+      inputVector, outputVector, false,
+      [](vtkUnstructuredGrid* grid, vtkUnstructuredGrid* output, const prstar_paraview::Options& o) {
+        return prstar_paraview::validate(grid, output, o);
+      });
 }
