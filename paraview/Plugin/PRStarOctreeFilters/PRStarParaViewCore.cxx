@@ -227,6 +227,30 @@ std::unique_ptr<Octree> make_octree(const Grid_input& input, const Options& o, N
   }
 }
 
+// `out` := the points (as doubles) and tetrahedra of `mesh`, nothing else; returns the number of
+// points.
+template <class Mesh>
+vtkIdType set_tetrahedral_grid(const Mesh& mesh, vtkUnstructuredGrid* out) {
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  pts->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
+  for (std::size_t i = 0; i < mesh.points.size(); ++i) {
+    const auto& q = mesh.points[i];
+    pts->SetPoint(static_cast<vtkIdType>(i), q.x(), q.y(), q.z());
+  }
+  vtkNew<vtkCellArray> cells;
+  cells->AllocateExact(static_cast<vtkIdType>(mesh.tetrahedra.size()),
+                       4 * static_cast<vtkIdType>(mesh.tetrahedra.size()));
+  for (const auto& t : mesh.tetrahedra) {
+    const vtkIdType ids[4] = {vtkIdType(t[0]), vtkIdType(t[1]), vtkIdType(t[2]), vtkIdType(t[3])};
+    cells->InsertNextCell(4, ids);
+  }
+  out->Initialize();
+  out->SetPoints(pts);
+  out->SetCells(VTK_TETRA, cells);
+  return pts->GetNumberOfPoints();
+}
+
 std::uint8_t vertex_code(PSO::Vertex_type t) {
   return static_cast<std::uint8_t>(PSO::vertex_type_code(t));
 }
@@ -629,26 +653,10 @@ Outcome simplify(vtkUnstructuredGrid* in, const Simplify_options& s, vtkUnstruct
     throw std::runtime_error(e.what());
   }
   const auto& mesh = res.mesh;
-  vtkNew<vtkPoints> pts;
-  pts->SetDataTypeToDouble();
-  pts->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
-  for (std::size_t i = 0; i < mesh.points.size(); ++i) {
-    const Point_3& q = mesh.points[i];
-    pts->SetPoint(static_cast<vtkIdType>(i), q.x(), q.y(), q.z());
-  }
-  vtkNew<vtkCellArray> cells;
-  cells->AllocateExact(static_cast<vtkIdType>(mesh.tetrahedra.size()),
-                       4 * static_cast<vtkIdType>(mesh.tetrahedra.size()));
-  for (const auto& t : mesh.tetrahedra) {
-    const vtkIdType ids[4] = {vtkIdType(t[0]), vtkIdType(t[1]), vtkIdType(t[2]), vtkIdType(t[3])};
-    cells->InsertNextCell(4, ids);
-  }
-  out->Initialize();
-  out->SetPoints(pts);
-  out->SetCells(VTK_TETRA, cells);
+  const vtkIdType npts = set_tetrahedral_grid(mesh, out);
   // point and cell data of the input elements each output element stands for
   vtkPointData* pd = out->GetPointData();
-  pd->CopyAllocate(in->GetPointData(), pts->GetNumberOfPoints());
+  pd->CopyAllocate(in->GetPointData(), npts);
   for (std::size_t i = 0; i < res.input_vertex.size(); ++i)
     pd->CopyData(in->GetPointData(), static_cast<vtkIdType>(res.input_vertex[i]), static_cast<vtkIdType>(i));
   vtkCellData* cd = out->GetCellData();
@@ -815,23 +823,7 @@ std::string readable_extensions() {
 Outcome read(const std::string& file, vtkUnstructuredGrid* out) {
   PSO::Indexed_tetrahedral_mesh<> mesh;
   PSO::IO::read_tetrahedral_mesh(file, mesh); // Read_error (a std::runtime_error) names file and line
-  vtkNew<vtkPoints> pts;
-  pts->SetDataTypeToDouble();
-  pts->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
-  for (std::size_t i = 0; i < mesh.points.size(); ++i) {
-    const auto& q = mesh.points[i];
-    pts->SetPoint(static_cast<vtkIdType>(i), q.x(), q.y(), q.z());
-  }
-  vtkNew<vtkCellArray> cells;
-  cells->AllocateExact(static_cast<vtkIdType>(mesh.tetrahedra.size()),
-                       4 * static_cast<vtkIdType>(mesh.tetrahedra.size()));
-  for (const auto& t : mesh.tetrahedra) {
-    const vtkIdType ids[4] = {vtkIdType(t[0]), vtkIdType(t[1]), vtkIdType(t[2]), vtkIdType(t[3])};
-    cells->InsertNextCell(4, ids);
-  }
-  out->Initialize();
-  out->SetPoints(pts);
-  out->SetCells(VTK_TETRA, cells);
+  set_tetrahedral_grid(mesh, out);
   for (const auto& a : mesh.point_data)
     out->GetPointData()->AddArray(make_array<vtkDoubleArray>(a.name.c_str(), a.values));
   for (const auto& a : mesh.cell_data)
