@@ -859,7 +859,7 @@ int main(int argc, char** argv) {
           PSO::make_input(*mesh),
           params::bucket_size(100).tetrahedron_permutation(false).concurrency_tag(CGAL::Sequential_tag()));
       ordered->points = tree.points();
-      ordered->tetrahedra = tree.tetrahedra();
+      ordered->tetrahedra.assign(tree.tetrahedra().begin(), tree.tetrahedra().end());
       key.resize(tree.number_of_vertices());
       ordered_field.resize(key.size());
       for (std::size_t v = 0; v < key.size(); ++v) {

@@ -17,6 +17,7 @@
 #include <CGAL/PR_star_octree/Index_arrays_input.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 #include <CGAL/PR_star_octree/Statistics.h>
+#include <CGAL/PR_star_octree/internal/compact_tetrahedra.h>
 #include <CGAL/PR_star_octree/internal/concept_checks.h>
 #include <CGAL/PR_star_octree/internal/leaf_tetrahedra.h>
 #include <CGAL/PR_star_octree/parameters.h>
@@ -157,6 +158,13 @@ public:
   ///     tetrahedron; without it `original_tetrahedron()` is not available, `original_tetrahedron_vertices()`
   ///     and everything per vertex still are)} \cgalParamType{`bool`} \cgalParamDefault{`true`}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{compact_tetrahedra}
+  ///     \cgalParamDescription{whether the tetrahedron array is stored compactly: 5-6 bytes per tetrahedron
+  ///     instead of 16 (32-bit indices), every tetrahedron kept exactly (see `tetrahedra()`); access by index
+  ///     then decodes, so `tetrahedron()` costs more, while the leaf topology decodes each leaf once}
+  ///     \cgalParamType{`bool`}
+  ///     \cgalParamDefault{`false`}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{concurrency_tag}
   ///     \cgalParamDescription{`CGAL::Parallel_tag` builds with several threads (TBB), `CGAL::Sequential_tag`
   ///     with one; the octree is the same.  (A constructor cannot take an explicit template argument: this is
@@ -206,11 +214,28 @@ public:
   /// \name The mesh (new numbering)
   /// @{
   std::size_t number_of_vertices() const { return points_.size(); }
-  std::size_t number_of_tetrahedra() const { return tetrahedra_.size(); }
+  std::size_t number_of_tetrahedra() const {
+    return compact_ ? compact_tetrahedra_.size() : tetrahedra_.size();
+  }
   const std::vector<Point_3>& points() const { return points_; }
   const Point_3& point(Index v) const { return points_[v]; }
-  const std::vector<Tetrahedron>& tetrahedra() const { return tetrahedra_; }
-  const Tetrahedron& tetrahedron(Index t) const { return tetrahedra_[t]; }
+  /// the range of tetrahedra (random access, `Tetrahedron` values; the view refers to the octree)
+  using Tetrahedra_view = PR_star_octree::internal::Tetrahedra_view<Index>;
+  /// the tetrahedra: a random-access range of `Tetrahedron` values whose iterators decode
+  /// consecutive tetrahedra in one pass; `data()` is the plain array, `nullptr` when
+  /// `is_compact()`
+  Tetrahedra_view tetrahedra() const {
+    return compact_ ? Tetrahedra_view(compact_tetrahedra_)
+                    : Tetrahedra_view(tetrahedra_.data(), tetrahedra_.size());
+  }
+  /// tetrahedron `t` (in the compact form, decoded: a few records are skipped)
+  Tetrahedron tetrahedron(Index t) const { return compact_ ? compact_tetrahedra_[t] : tetrahedra_[t]; }
+  /// whether the tetrahedra are stored compactly (named parameter `compact_tetrahedra`)
+  bool is_compact() const { return compact_; }
+  /// the compact tetrahedron array (empty unless `is_compact()`)
+  const PR_star_octree::internal::Compact_tetrahedra<Index>& compact_tetrahedra() const {
+    return compact_tetrahedra_;
+  }
   bool has_scalar_field() const { return has_scalar_; }
   /// one value per vertex (new numbering), or empty
   const std::vector<double>& scalars() const { return scalars_; }
@@ -249,6 +274,31 @@ public:
     return Leaf_tetrahedra(leaf_offsets_.data() + nd.shared_begin, nd.shared_end - nd.shared_begin,
                            leaf_groups_.data() + nd.group_begin, nd.group_end - nd.group_begin,
                            nd.owned_begin, nd.owned_end);
+  }
+  /// calls `f(t, c)` for each tetrahedron `t` of leaf `n` (in the order of `leaf_tetrahedra(n)`), `c`
+  /// its vertices, decoding the compact form in one pass; stops early when `f` returns `false` (if it
+  /// returns a `bool`)
+  template <class Function>
+  void for_each_leaf_tetrahedron(Node_index n, Function f) const {
+    auto call = [&f](Index t, const Tetrahedron& c) -> bool {
+      if constexpr (std::is_same<decltype(f(t, c)), bool>::value)
+        return f(t, c);
+      else {
+        f(t, c);
+        return true;
+      }
+    };
+    const Leaf_tetrahedra tets = leaf_tetrahedra(n);
+    if (!compact_) {
+      for (Index t : tets)
+        if (!call(t, tetrahedra_[t])) return;
+      return;
+    }
+    typename PR_star_octree::internal::Compact_tetrahedra<Index>::Cursor c(compact_tetrahedra_, 0);
+    for (Index t : tets) {
+      c.seek(t);
+      if (!call(t, *c)) return;
+    }
   }
   /// the number of listed (shared) entries of all leaves: `(chi - 1) |T|`
   std::size_t number_of_shared_entries() const { return leaf_offsets_.size(); }
@@ -320,7 +370,7 @@ public:
   bool is_reoriented(Index t) const { return (reoriented_[t >> 6] >> (t & 63)) & 1u; }
   /// tetrahedron `t` as the user gave it: original vertex indices, original vertex order
   std::array<Index, 4> original_tetrahedron_vertices(Index t) const {
-    Tetrahedron c = tetrahedra_[t];
+    Tetrahedron c = tetrahedron(t);
     if (is_reoriented(t)) std::swap(c[2], c[3]);
     for (Index& v : c) v = original_vertex(v);
     return c;
@@ -389,6 +439,7 @@ private:
     keep_vertex_permutation_ = choose_parameter(get_parameter(np, np_tags::vertex_permutation), true);
     keep_tetrahedron_permutation_ =
         choose_parameter(get_parameter(np, np_tags::tetrahedron_permutation), true);
+    compact_ = choose_parameter(get_parameter(np, np_tags::compact_tetrahedra), false);
   }
   void check_bucket_size() const {
     if (bucket_size_ == 0)
@@ -418,6 +469,7 @@ private:
   std::size_t max_depth_;
   bool keep_vertex_permutation_ = true;
   bool keep_tetrahedron_permutation_ = true;
+  bool compact_ = false;
   std::size_t depth_ = 0;
   std::size_t depth_limited_leaves_ = 0;
   std::size_t coincident_leaves_ = 0;
@@ -431,7 +483,8 @@ private:
   std::vector<int> labels_; // empty when every tetrahedron has `uniform_label_`
   int uniform_label_ = 0;
   bool has_labels_ = false;
-  std::vector<Tetrahedron> tetrahedra_;
+  std::vector<Tetrahedron> tetrahedra_; // empty when compact_
+  PR_star_octree::internal::Compact_tetrahedra<Index> compact_tetrahedra_;
   std::vector<Node> nodes_;
   std::vector<Node_index> leaves_;
   std::vector<std::uint16_t> leaf_offsets_;                                   // the shared lists, encoded

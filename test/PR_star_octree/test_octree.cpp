@@ -253,7 +253,8 @@ void check_lean_construction(const Mesh& mesh, std::size_t kv, const std::string
     CHECK(c.tetrahedron_permutation().empty());
     CHECK(c.points() == a.points());
     CHECK(c.scalars() == a.scalars());
-    CHECK(c.tetrahedra() == a.tetrahedra());
+    CHECK(std::equal(c.tetrahedra().begin(), c.tetrahedra().end(), a.tetrahedra().begin(),
+                     a.tetrahedra().end()));
     CHECK_EQUAL(c.has_vertex_permutation(), parallel == 0);
     if (parallel == 0)
       CHECK(c.vertex_permutation() == a.vertex_permutation());
@@ -384,6 +385,97 @@ void test_compact_leaf_lists() {
     }
     CHECK(same);
     CHECK(multi_group_leaves > 0); // the multi-group path was exercised
+  }
+}
+
+// The compact tetrahedron array against the plain one it encodes: every tetrahedron by random
+// access, in one pass, through a cursor moving back and forth, and the edge cases of the encoding
+// (a vertex owning 255 or more tetrahedra, differences of 1 to 4 bytes, 64-bit indices, vertices
+// owning none, an empty array, unsorted input).
+template <class Index>
+void check_compact_codec(const std::vector<std::array<Index, 4>>& T, std::size_t nv,
+                         const std::string& what) {
+  const prstar_test::Failure_context context(what);
+  using Codec = CGAL::PR_star_octree::internal::Compact_tetrahedra<Index>;
+  Codec c;
+  c.assign(T.data(), T.size(), nv);
+  CHECK_EQUAL(c.size(), T.size());
+  std::vector<std::array<Index, 4>> out;
+  c.decode(0, T.size(), std::back_inserter(out));
+  CHECK(out == T);
+  bool same = true;
+  for (std::size_t t = 0; t < T.size(); ++t) same = same && c[t] == T[t];
+  CHECK(same);
+  std::mt19937 rng(7);
+  typename Codec::Cursor cur(c, 0);
+  for (int i = 0; i < 2000 && !T.empty(); ++i) {
+    const std::size_t t =
+        i % 3 == 0 ? rng() % T.size() : (std::min)(T.size() - 1, cur.position() + rng() % 70);
+    cur.seek(t);
+    same = same && cur.position() == t && *cur == T[t];
+  }
+  CHECK(same);
+  std::vector<std::size_t> owned(nv, 0);
+  for (const auto& x : T) ++owned[*std::min_element(x.begin(), x.end())];
+  for (std::size_t v = 0; v < nv; ++v) same = same && c.count(Index(v)) == owned[v];
+  CHECK(same);
+}
+
+void test_compact_tetrahedra() {
+  std::mt19937 rng(3);
+  // differences of every byte length, a vertex owning 600 tetrahedra, vertices owning none
+  std::vector<std::array<std::uint32_t, 4>> T;
+  const std::uint32_t nv = 40000000;
+  for (std::uint32_t v = 0; v < 3000; v += 1 + rng() % 3) {
+    const int n = v == 1500 ? 600 : int(rng() % 9);
+    for (int i = 0; i < n; ++i) {
+      auto r = [&](std::uint32_t n) { return std::uint32_t(rng() % n); };
+      const std::uint32_t far[4] = {1 + r(200), 300 + r(60000), 70000 + r(1000000), 20000000 + r(19000000)};
+      std::array<std::uint32_t, 4> c{{v, v + far[rng() % 4], v + far[rng() % 4] + 1, v + far[rng() % 4] + 2}};
+      if (c[1] == c[2] || c[1] == c[3] || c[2] == c[3]) continue;
+      std::shuffle(c.begin(), c.end(), rng);
+      T.push_back(c);
+    }
+  }
+  check_compact_codec(T, nv, "compact codec, 32-bit");
+  std::vector<std::array<std::uint64_t, 4>> T64;
+  for (const auto& c : T) T64.push_back({{c[0], c[1], c[2], c[3]}});
+  check_compact_codec(T64, nv, "compact codec, 64-bit"); // (lengths 1, 2, 4, 8: 8 needs |V| > 2^32)
+  check_compact_codec(std::vector<std::array<std::uint32_t, 4>>(), 10, "compact codec, empty");
+  // unsorted by smallest vertex, a repeated vertex, a vertex out of range
+  CGAL::PR_star_octree::internal::Compact_tetrahedra<std::uint32_t> c;
+  const std::vector<std::array<std::uint32_t, 4>> unsorted{{{5, 6, 7, 8}}, {{1, 2, 3, 4}}},
+      repeated{{{1, 2, 2, 4}}}, outside{{{1, 2, 3, 40}}};
+  CHECK_THROWS(std::invalid_argument, "not sorted", c.assign(unsorted.data(), 2, 10));
+  CHECK_THROWS(std::invalid_argument, "repeated", c.assign(repeated.data(), 1, 10));
+  CHECK_THROWS(std::invalid_argument, "out-of-range", c.assign(outside.data(), 1, 10));
+
+  // In the octree: the same tetrahedra, the same leaves, a quarter of the bytes or less.
+  using Tree = CGAL::PR_star_octree_3<>;
+  const Mesh mesh = shuffled_lattice(20, 9);
+  const auto in = CGAL::PR_star_octree::make_input(mesh);
+  for (std::size_t kv : {std::size_t(1), std::size_t(50)}) {
+    const Tree plain(in, CGAL::PR_star_octree::parameters::bucket_size(kv));
+    const Tree compact(in, CGAL::PR_star_octree::parameters::bucket_size(kv).compact_tetrahedra(true));
+    CHECK(compact.is_compact() && !plain.is_compact());
+    CHECK(compact.tetrahedra().data() == nullptr);
+    check_invariants(compact, in, "compact lattice 20, k_v=" + std::to_string(kv));
+    CHECK(std::equal(compact.tetrahedra().begin(), compact.tetrahedra().end(), plain.tetrahedra().begin(),
+                     plain.tetrahedra().end()));
+    bool same = true;
+    for (std::size_t t = 0; t < plain.number_of_tetrahedra(); t += 13)
+      same = same && compact.tetrahedron(Tree::Index(t)) == plain.tetrahedron(Tree::Index(t)) &&
+             compact.original_tetrahedron_vertices(Tree::Index(t)) ==
+                 plain.original_tetrahedron_vertices(Tree::Index(t));
+    CHECK(same);
+    const auto a = plain.statistics(), b = compact.statistics();
+    CHECK_EQUAL(a.leaf_tetrahedra_entries, b.leaf_tetrahedra_entries);
+    CHECK_EQUAL(a.unreferenced_vertices, b.unreferenced_vertices);
+    std::cout << "  compact lattice 20, k_v=" << kv << ": "
+              << double(b.bytes.tetrahedra) / double(b.tetrahedra) << " bytes per tetrahedron instead of "
+              << double(a.bytes.tetrahedra) / double(a.tetrahedra) << "\n";
+    CHECK(3 * b.bytes.tetrahedra <= a.bytes.tetrahedra);
+    CHECK(b.bytes.tetrahedra > 0);
   }
 }
 
@@ -579,6 +671,7 @@ int main(int argc, char** argv) {
   test_other_traits();
   test_radix_sort_in_place();
   test_compact_leaf_lists();
+  test_compact_tetrahedra();
 
   // Generated meshes (CGAL Mesh_3 and TetGen, made by the test fixture).
   for (const char* name :

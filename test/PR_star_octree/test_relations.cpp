@@ -372,8 +372,15 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
     std::set<Index> boundary_face_tets;
     for (const auto& f : truth.faces)
       if (f.second.size() == 1) boundary_face_tets.insert(f.second[0]);
-    for (std::size_t kv : {std::size_t(3), std::size_t(64), Octree::infinite_bucket_size}) {
-      Octree tree(CGAL::PR_star_octree::make_input(mesh), CGAL::PR_star_octree::parameters::bucket_size(kv));
+    // (the compact tetrahedron array too: the kernels decode it, the results must not change)
+    const std::pair<std::size_t, bool> configurations[] = {
+        {3, false}, {64, false}, {Octree::infinite_bucket_size, false}, {3, true}, {64, true}};
+    for (const auto& [kv, compact] : configurations) {
+      const prstar_test::Failure_context kv_context(name + (compact ? " compact" : "") + " k_v " +
+                                                    std::to_string(kv));
+      Octree tree(CGAL::PR_star_octree::make_input(mesh),
+                  CGAL::PR_star_octree::parameters::bucket_size(kv).compact_tetrahedra(compact));
+      CHECK_EQUAL(tree.is_compact(), compact);
       const std::size_t n = mesh.points.size();
       // Everything below is in the user's numbering (property maps keyed by the input order).
       std::vector<Vertex_type> types(n, Vertex_type::NONMANIFOLD);
@@ -477,148 +484,154 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
     }
   }
 
-  for (std::size_t kv : kvs) {
-    Octree tree(CGAL::PR_star_octree::make_input(mesh), CGAL::PR_star_octree::parameters::bucket_size(kv));
-    check_random_access(tree, truth);
-    auto orig_v = [&](Index v) { return tree.original_vertex(v); };
-    auto orig_t = [&](Index t) { return tree.original_tetrahedron(t); };
-    std::size_t edges_owned = 0, triangles_owned = 0, boundary_owned = 0;
-    std::set<EdgeKey> edges_seen;
-    std::set<Face> triangles_seen;
+  for (const bool compact : {false, true})
+    for (std::size_t kv : kvs) {
+      // (compact: the finite k_v; with one leaf, random access decodes all of T for each vertex)
+      if (compact && kv == Octree::infinite_bucket_size) continue;
+      const prstar_test::Failure_context kv_context(name + (compact ? " compact" : "") + " k_v " +
+                                                    std::to_string(kv));
+      Octree tree(CGAL::PR_star_octree::make_input(mesh),
+                  CGAL::PR_star_octree::parameters::bucket_size(kv).compact_tetrahedra(compact));
+      check_random_access(tree, truth);
+      auto orig_v = [&](Index v) { return tree.original_vertex(v); };
+      auto orig_t = [&](Index t) { return tree.original_tetrahedron(t); };
+      std::size_t edges_owned = 0, triangles_owned = 0, boundary_owned = 0;
+      std::set<EdgeKey> edges_seen;
+      std::set<Face> triangles_seen;
 
-    CGAL::PR_star_octree::for_each_leaf(tree, CGAL::PR_star_octree::ALL_RELATIONS, [&](const Local& local) {
-      const auto tets = local.tetrahedra();
-      for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v) {
-        // VT (Algorithm 1) and the random-access star.
-        std::vector<Index> s;
-        for (Index t : local.vertex_tetrahedra(v)) s.push_back(orig_t(t));
-        std::sort(s.begin(), s.end());
-        CHECK_EQUAL(s, truth.vt[orig_v(v)]);
-        CHECK(std::is_sorted(local.vertex_tetrahedra(v).begin(), local.vertex_tetrahedra(v).end()));
-        // VV.
-        std::set<Index> w;
-        for (Index u : local.vertex_vertices(v)) w.insert(orig_v(u));
-        CHECK_EQUAL(w, truth.vv[orig_v(v)]);
-        // Vertex link: the faces opposite v, positively oriented with v first.
-        std::vector<std::array<Index, 3>> link;
-        local.vertex_link(v, std::back_inserter(link));
-        CHECK_EQUAL(link.size(), s.size());
-        for (const auto& f : link) {
-          CHECK(CGAL::orientation(tree.point(v), tree.point(f[0]), tree.point(f[1]), tree.point(f[2])) !=
-                CGAL::NEGATIVE);
-          CHECK(truth.tets_of_face({{orig_v(f[0]), orig_v(f[1]), orig_v(f[2])}}) != nullptr);
+      CGAL::PR_star_octree::for_each_leaf(tree, CGAL::PR_star_octree::ALL_RELATIONS, [&](const Local& local) {
+        const auto tets = local.tetrahedra();
+        for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v) {
+          // VT (Algorithm 1) and the random-access star.
+          std::vector<Index> s;
+          for (Index t : local.vertex_tetrahedra(v)) s.push_back(orig_t(t));
+          std::sort(s.begin(), s.end());
+          CHECK_EQUAL(s, truth.vt[orig_v(v)]);
+          CHECK(std::is_sorted(local.vertex_tetrahedra(v).begin(), local.vertex_tetrahedra(v).end()));
+          // VV.
+          std::set<Index> w;
+          for (Index u : local.vertex_vertices(v)) w.insert(orig_v(u));
+          CHECK_EQUAL(w, truth.vv[orig_v(v)]);
+          // Vertex link: the faces opposite v, positively oriented with v first.
+          std::vector<std::array<Index, 3>> link;
+          local.vertex_link(v, std::back_inserter(link));
+          CHECK_EQUAL(link.size(), s.size());
+          for (const auto& f : link) {
+            CHECK(CGAL::orientation(tree.point(v), tree.point(f[0]), tree.point(f[1]), tree.point(f[2])) !=
+                  CGAL::NEGATIVE);
+            CHECK(truth.tets_of_face({{orig_v(f[0]), orig_v(f[1]), orig_v(f[2])}}) != nullptr);
+          }
+          // VE: the edges of v.
+          std::size_t degree = 0;
+          for (Index e : local.vertex_edges(v)) {
+            CHECK(local.edge(e).v0 == v || local.edge(e).v1 == v);
+            ++degree;
+          }
+          CHECK_EQUAL(degree, truth.vv[orig_v(v)].size());
         }
-        // VE: the edges of v.
-        std::size_t degree = 0;
-        for (Index e : local.vertex_edges(v)) {
-          CHECK(local.edge(e).v0 == v || local.edge(e).v1 == v);
-          ++degree;
+        // TT (Algorithm 2): exact for faces with a vertex in the leaf; random access for all.
+        for (std::size_t i = 0; i < tets.size(); ++i) {
+          const Index t = tets[i];
+          const auto& c = tree.tetrahedron(t);
+          for (int k = 0; k < 4; ++k) {
+            const Face f{{orig_v(c[(k + 1) & 3]), orig_v(c[(k + 2) & 3]), orig_v(c[(k + 3) & 3])}};
+            const auto* ft = truth.tets_of_face(f);
+            CHECK(ft != nullptr);
+            if (!ft) continue;
+            const Index expected =
+                ft->size() == 1 ? Local::no_neighbor : ((*ft)[0] == orig_t(t) ? (*ft)[1] : (*ft)[0]);
+            const Index got = local.tetrahedron_adjacency(i)[k];
+            const bool face_in_leaf = local.is_local_vertex(c[(k + 1) & 3]) ||
+                                      local.is_local_vertex(c[(k + 2) & 3]) ||
+                                      local.is_local_vertex(c[(k + 3) & 3]);
+            if (face_in_leaf)
+              CHECK_EQUAL((got == Local::no_neighbor ? got : orig_t(got)), expected);
+            else
+              CHECK_EQUAL(got, Local::unknown_neighbor);
+          }
         }
-        CHECK_EQUAL(degree, truth.vv[orig_v(v)].size());
-      }
-      // TT (Algorithm 2): exact for faces with a vertex in the leaf; random access for all.
-      for (std::size_t i = 0; i < tets.size(); ++i) {
-        const Index t = tets[i];
-        const auto& c = tree.tetrahedron(t);
-        for (int k = 0; k < 4; ++k) {
-          const Face f{{orig_v(c[(k + 1) & 3]), orig_v(c[(k + 2) & 3]), orig_v(c[(k + 3) & 3])}};
-          const auto* ft = truth.tets_of_face(f);
-          CHECK(ft != nullptr);
-          if (!ft) continue;
-          const Index expected =
-              ft->size() == 1 ? Local::no_neighbor : ((*ft)[0] == orig_t(t) ? (*ft)[1] : (*ft)[0]);
-          const Index got = local.tetrahedron_adjacency(i)[k];
-          const bool face_in_leaf = local.is_local_vertex(c[(k + 1) & 3]) ||
-                                    local.is_local_vertex(c[(k + 2) & 3]) ||
-                                    local.is_local_vertex(c[(k + 3) & 3]);
-          if (face_in_leaf)
-            CHECK_EQUAL((got == Local::no_neighbor ? got : orig_t(got)), expected);
-          else
-            CHECK_EQUAL(got, Local::unknown_neighbor);
-        }
-      }
-      // Edges: stars as sets and as cyclic sequences, links, boundary flags, each owned once.
-      for (std::size_t e = 0; e < local.number_of_edges(); ++e) {
-        const auto& ed = local.edge(e);
-        CHECK(ed.v0 < ed.v1);
-        CHECK(local.is_local_vertex(ed.v0) || local.is_local_vertex(ed.v1));
-        const EdgeKey key{std::min(orig_v(ed.v0), orig_v(ed.v1)), std::max(orig_v(ed.v0), orig_v(ed.v1))};
-        auto it = truth.edges.find(key);
-        CHECK(it != truth.edges.end());
-        if (it == truth.edges.end()) continue;
-        std::vector<Index> s;
-        for (Index t : local.edge_tetrahedra(e)) s.push_back(orig_t(t));
-        std::vector<Index> sorted = s;
-        std::sort(sorted.begin(), sorted.end());
-        CHECK_EQUAL(sorted, it->second);
-        const bool boundary = truth.is_boundary_edge(key.first, key.second);
-        const bool manifold = truth.is_manifold_edge(mesh, key.first, key.second);
-        CHECK_EQUAL(local.is_nonmanifold_edge(e), !manifold);
-        if (!manifold) {
+        // Edges: stars as sets and as cyclic sequences, links, boundary flags, each owned once.
+        for (std::size_t e = 0; e < local.number_of_edges(); ++e) {
+          const auto& ed = local.edge(e);
+          CHECK(ed.v0 < ed.v1);
+          CHECK(local.is_local_vertex(ed.v0) || local.is_local_vertex(ed.v1));
+          const EdgeKey key{std::min(orig_v(ed.v0), orig_v(ed.v1)), std::max(orig_v(ed.v0), orig_v(ed.v1))};
+          auto it = truth.edges.find(key);
+          CHECK(it != truth.edges.end());
+          if (it == truth.edges.end()) continue;
+          std::vector<Index> s;
+          for (Index t : local.edge_tetrahedra(e)) s.push_back(orig_t(t));
+          std::vector<Index> sorted = s;
+          std::sort(sorted.begin(), sorted.end());
+          CHECK_EQUAL(sorted, it->second);
+          const bool boundary = truth.is_boundary_edge(key.first, key.second);
+          const bool manifold = truth.is_manifold_edge(mesh, key.first, key.second);
+          CHECK_EQUAL(local.is_nonmanifold_edge(e), !manifold);
+          if (!manifold) {
+            if (local.owns_edge(e)) {
+              ++edges_owned;
+              CHECK(edges_seen.insert(key).second);
+            }
+            continue;
+          }
+          CHECK_EQUAL(local.is_boundary_edge(e), boundary);
+          CHECK(is_ordered_star(mesh, s, !boundary));
+          // The same cyclic order as CGAL's circulator around the edge (up to rotation and reversal).
+          if (with_cgal) CHECK(same_star(s, cgal_stars[key], !boundary));
+          // The link: one vertex per tetrahedron (closed) or one more (open); tetrahedron i holds
+          // link vertices i and i+1 (cyclically).
+          const auto lk = local.edge_link(e);
+          CHECK_EQUAL(lk.size(), s.size() + (boundary ? 1 : 0));
+          for (std::size_t i = 0; i < s.size() && lk.size() == s.size() + (boundary ? 1 : 0); ++i) {
+            const auto& c = tree.tetrahedron(local.edge_tetrahedra(e).begin()[i]);
+            const Index x = lk.begin()[i], y = lk.begin()[(i + 1) % lk.size()];
+            CHECK(std::count(c.begin(), c.end(), x) == 1 && std::count(c.begin(), c.end(), y) == 1);
+            // Right-hand rule around v0 -> v1: (v0, v1, x, y) positively oriented.
+            CHECK(CGAL::orientation(tree.point(ed.v0), tree.point(ed.v1), tree.point(x), tree.point(y)) !=
+                  CGAL::NEGATIVE);
+          }
           if (local.owns_edge(e)) {
             ++edges_owned;
             CHECK(edges_seen.insert(key).second);
           }
-          continue;
         }
-        CHECK_EQUAL(local.is_boundary_edge(e), boundary);
-        CHECK(is_ordered_star(mesh, s, !boundary));
-        // The same cyclic order as CGAL's circulator around the edge (up to rotation and reversal).
-        if (with_cgal) CHECK(same_star(s, cgal_stars[key], !boundary));
-        // The link: one vertex per tetrahedron (closed) or one more (open); tetrahedron i holds
-        // link vertices i and i+1 (cyclically).
-        const auto lk = local.edge_link(e);
-        CHECK_EQUAL(lk.size(), s.size() + (boundary ? 1 : 0));
-        for (std::size_t i = 0; i < s.size() && lk.size() == s.size() + (boundary ? 1 : 0); ++i) {
-          const auto& c = tree.tetrahedron(local.edge_tetrahedra(e).begin()[i]);
-          const Index x = lk.begin()[i], y = lk.begin()[(i + 1) % lk.size()];
-          CHECK(std::count(c.begin(), c.end(), x) == 1 && std::count(c.begin(), c.end(), y) == 1);
-          // Right-hand rule around v0 -> v1: (v0, v1, x, y) positively oriented.
-          CHECK(CGAL::orientation(tree.point(ed.v0), tree.point(ed.v1), tree.point(x), tree.point(y)) !=
-                CGAL::NEGATIVE);
+        // Triangles.
+        for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
+          const auto& tr = local.triangle(f);
+          Face key{{orig_v(tr[0]), orig_v(tr[1]), orig_v(tr[2])}};
+          std::sort(key.begin(), key.end());
+          const auto* ft = truth.tets_of_face(key);
+          CHECK(ft != nullptr);
+          if (!ft) continue;
+          std::vector<Index> s;
+          for (Index t : local.triangle_tetrahedra(f)) s.push_back(orig_t(t));
+          std::sort(s.begin(), s.end());
+          std::vector<Index> expected = *ft;
+          std::sort(expected.begin(), expected.end());
+          CHECK_EQUAL(s, expected);
+          if (local.owns_triangle(f)) {
+            ++triangles_owned;
+            boundary_owned += s.size() == 1;
+            CHECK(triangles_seen.insert(key).second);
+          }
         }
-        if (local.owns_edge(e)) {
-          ++edges_owned;
-          CHECK(edges_seen.insert(key).second);
-        }
-      }
-      // Triangles.
-      for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
-        const auto& tr = local.triangle(f);
-        Face key{{orig_v(tr[0]), orig_v(tr[1]), orig_v(tr[2])}};
-        std::sort(key.begin(), key.end());
-        const auto* ft = truth.tets_of_face(key);
-        CHECK(ft != nullptr);
-        if (!ft) continue;
-        std::vector<Index> s;
-        for (Index t : local.triangle_tetrahedra(f)) s.push_back(orig_t(t));
-        std::sort(s.begin(), s.end());
-        std::vector<Index> expected = *ft;
-        std::sort(expected.begin(), expected.end());
-        CHECK_EQUAL(s, expected);
-        if (local.owns_triangle(f)) {
-          ++triangles_owned;
-          boundary_owned += s.size() == 1;
-          CHECK(triangles_seen.insert(key).second);
-        }
-      }
-    });
-    CHECK_EQUAL(edges_owned, truth.edges.size());
-    CHECK_EQUAL(triangles_owned, truth.faces.size());
-    CHECK_EQUAL(boundary_owned, truth.boundary_faces());
-    const auto counts = CGAL::PR_star_octree::count_simplices(tree);
-    CHECK_EQUAL(counts.edges, truth.edges.size());
-    CHECK_EQUAL(counts.triangles, truth.faces.size());
-    CHECK_EQUAL(counts.boundary_triangles, truth.boundary_faces());
-    CHECK_EQUAL(counts.vertices, truth.referenced);
-    CHECK(counts.euler_characteristic() == (long long)truth.referenced - (long long)truth.edges.size() +
-                                               (long long)truth.faces.size() -
-                                               (long long)mesh.tetrahedra.size());
-    if (kv == kvs.front())
-      std::cout << "  " << name << ": V=" << counts.vertices << " E=" << counts.edges
-                << " F=" << counts.triangles << " (boundary " << counts.boundary_triangles
-                << ") T=" << counts.tetrahedra << " Euler=" << counts.euler_characteristic() << "\n";
-  }
+      });
+      CHECK_EQUAL(edges_owned, truth.edges.size());
+      CHECK_EQUAL(triangles_owned, truth.faces.size());
+      CHECK_EQUAL(boundary_owned, truth.boundary_faces());
+      const auto counts = CGAL::PR_star_octree::count_simplices(tree);
+      CHECK_EQUAL(counts.edges, truth.edges.size());
+      CHECK_EQUAL(counts.triangles, truth.faces.size());
+      CHECK_EQUAL(counts.boundary_triangles, truth.boundary_faces());
+      CHECK_EQUAL(counts.vertices, truth.referenced);
+      CHECK(counts.euler_characteristic() == (long long)truth.referenced - (long long)truth.edges.size() +
+                                                 (long long)truth.faces.size() -
+                                                 (long long)mesh.tetrahedra.size());
+      if (kv == kvs.front())
+        std::cout << "  " << name << ": V=" << counts.vertices << " E=" << counts.edges
+                  << " F=" << counts.triangles << " (boundary " << counts.boundary_triangles
+                  << ") T=" << counts.tetrahedra << " Euler=" << counts.euler_characteristic() << "\n";
+    }
 }
 
 } // namespace

@@ -171,7 +171,7 @@ int run_curvature(const Options& o) {
 
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
-  const auto np = params::bucket_size(kv).maximum_depth(o.max_depth());
+  const auto np = params::bucket_size(kv).maximum_depth(o.max_depth()).compact_tetrahedra(o.compact());
   const Octree tree(std::move(mesh), np.vertex_permutation(!lean).tetrahedron_permutation(
                                          !out.empty() && !arrays.cell_data.empty()));
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();

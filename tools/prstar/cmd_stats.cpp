@@ -48,6 +48,18 @@ void statistics_json(prstar::Json& j, const CGAL::PR_star_octree::Statistics& s,
   j.field("ia_overhead_per_vertex", s.ia_overhead_per_vertex);
   j.field("ia_total_per_vertex", s.ia_total_per_vertex);
   j.field("bytes", s.bytes.total());
+  j.field("compact_tetrahedra", s.compact_tetrahedra);
+  // the same figures per tetrahedron (the one measure of compactness, as in the benchmarks)
+  const double per_tet = s.tetrahedra ? 1. / double(s.tetrahedra) : 0.;
+  j.field("bytes_per_tetrahedron", double(s.bytes.total()) * per_tet);
+  j.key("bytes_per_tetrahedron_detail").begin_object();
+  j.field("points", double(s.bytes.points) * per_tet).field("scalars", double(s.bytes.scalars) * per_tet);
+  j.field("tetrahedra", double(s.bytes.tetrahedra) * per_tet)
+      .field("labels", double(s.bytes.labels) * per_tet);
+  j.field("nodes", double(s.bytes.nodes) * per_tet)
+      .field("leaf_tetrahedra", double(s.bytes.leaf_tetrahedra) * per_tet);
+  j.field("permutations", double(s.bytes.permutations) * per_tet);
+  j.end_object();
   j.key("bytes_detail").begin_object();
   j.field("points", s.bytes.points).field("scalars", s.bytes.scalars).field("tetrahedra", s.bytes.tetrahedra);
   if (s.bytes.labels) j.field("labels", s.bytes.labels);
@@ -103,16 +115,18 @@ void write_leaf_boxes(const std::string& out, const Octree& tree) {
 // last k_v takes the mesh over (lean construction: no second copy of V and T, no tetrahedron
 // permutation, which nothing here reports).
 void report_statistics(Mesh mesh, const std::string& name, const std::vector<std::size_t>& kvs,
-                       std::size_t max_depth, bool json, Progress_bar& progress,
+                       std::size_t max_depth, bool compact, bool json, Progress_bar& progress,
                        const std::string& octree_out) {
   std::vector<CGAL::PR_star_octree::Statistics> stats;
   std::vector<double> seconds;
   CGAL::PR_star_octree::Simplex_counts counts;
   for (std::size_t kv : kvs) {
     progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
-    const auto np =
-        params::bucket_size(kv).maximum_depth(max_depth).tetrahedron_permutation(false).vertex_permutation(
-            false);
+    const auto np = params::bucket_size(kv)
+                        .maximum_depth(max_depth)
+                        .compact_tetrahedra(compact)
+                        .tetrahedron_permutation(false)
+                        .vertex_permutation(false);
     const bool last = stats.size() + 1 == kvs.size();
     const Octree tree =
         last ? Octree(std::move(mesh), np) : Octree(CGAL::PR_star_octree::make_input(mesh), np);
@@ -171,13 +185,15 @@ void report_statistics(Mesh mesh, const std::string& name, const std::vector<std
             << fixed(s0.ia_total_per_vertex, 2) << " |V|\n\n";
 
   Table t({"k_v", "|N|", "|N_leaf|", "depth", "chi", "overhead/|V|", "total/|V|", "index bytes",
-           "total bytes", "build s"});
+           "total bytes", "bytes/tet", "build s"});
   for (std::size_t i = 0; i < stats.size(); ++i) {
     const auto& s = stats[i];
     t.add({bucket_size_string(kvs[i]), std::to_string(s.nodes), std::to_string(s.leaves),
            std::to_string(s.depth), fixed(s.chi, 3), fixed(s.prstar_overhead_per_vertex, 2),
            fixed(s.prstar_total_per_vertex, 2), human_bytes(double(s.bytes.index())),
-           human_bytes(double(s.bytes.total())), fixed(seconds[i], 3)});
+           human_bytes(double(s.bytes.total())),
+           fixed(s.tetrahedra ? double(s.bytes.total()) / double(s.tetrahedra) : 0., 1),
+           fixed(seconds[i], 3)});
   }
   std::cout << t.str();
   for (std::size_t i = 0; i < stats.size(); ++i) {
@@ -195,7 +211,7 @@ namespace {
 int run_stats(const Options& o) {
   Progress_bar progress(o.show_progress());
   Mesh mesh = read_mesh(o.input(), progress);
-  report_statistics(std::move(mesh), o.input(), o.kvs(), o.max_depth(), o.json(), progress,
+  report_statistics(std::move(mesh), o.input(), o.kvs(), o.max_depth(), o.compact(), o.json(), progress,
                     o.output("--octree"));
   return exit_success;
 }

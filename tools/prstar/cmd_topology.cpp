@@ -75,6 +75,7 @@ Octree build_octree(const Options& o, Mesh&& mesh, Mesh_arrays& arrays, bool wri
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(o.kv()) + ")");
   return Octree(std::move(mesh), params::bucket_size(o.kv())
                                      .maximum_depth(o.max_depth())
+                                     .compact_tetrahedra(o.compact())
                                      .vertex_permutation(true)
                                      .tetrahedron_permutation(write));
 }

@@ -64,7 +64,7 @@ public:
   Command& kv(std::string default_value = "");
   /// --kv: a comma-separated list of bucket thresholds (default: the library's default k_v).
   Command& kv_list(std::string default_value = "");
-  /// --max-depth: the depth bound of the octree.
+  /// --max-depth: the depth bound of the octree, and --compact: the compact tetrahedron array.
   Command& max_depth();
   /// -o/--output (`option` empty) or another output option (e.g. "--csv"): a file written by
   /// the command.  `extension` is the one allowed extension (".vtu"), or empty for every mesh
@@ -135,6 +135,8 @@ public:
   std::size_t kv() const { return kvs_.front(); }
   const std::vector<std::size_t>& kvs() const { return kvs_; }
   std::size_t max_depth() const { return max_depth_; }
+  /// --compact: the octree stores its tetrahedra compactly (named parameter `compact_tetrahedra`)
+  bool compact() const { return compact_; }
   /// An output file, empty when not given: `output()` is -o/--output, `output("--csv")` another.
   std::string output(const std::string& option = "") const;
   bool force() const { return force_; }
@@ -171,7 +173,7 @@ private:
   std::vector<std::size_t> kvs_;
   std::size_t max_depth_ = 0, threads_ = 0, max_memory_ = 0;
   std::vector<std::pair<std::string, std::string>> outputs_;
-  bool force_ = false, json_ = false, quiet_ = false, quiet_silences_summary_ = false;
+  bool force_ = false, json_ = false, quiet_ = false, quiet_silences_summary_ = false, compact_ = false;
 };
 
 /// The point-data array of `point_data` named `name` (the first one when `name` is empty), as a

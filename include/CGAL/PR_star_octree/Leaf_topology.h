@@ -129,6 +129,17 @@ public:
   bool is_local_vertex(Index v) const { return vb_ <= v && v < ve_; }
   /// the tetrahedra of the leaf (its list); "local tetrahedron `i`" is `tetrahedra()[i]`
   typename Octree::Leaf_tetrahedra tetrahedra() const { return tree_->leaf_tetrahedra(leaf_); }
+  /// the vertices of tetrahedron `t` of the leaf's list, as `Octree::tetrahedron(t)`, but without
+  /// decoding again when the octree's tetrahedra are compact (the leaf's are decoded once by `build()`)
+  /// \pre `t` is in `tetrahedra()`
+  const Tetrahedron& tetrahedron(Index t) const { return tree_->is_compact() ? cells_[t] : plain_[t]; }
+  /// the leaf's tetrahedra indexed by their index in T: `tetrahedron_map()[t]` is `tetrahedron(t)`
+  /// (the array argument of the kernels that take one)
+  struct Tetrahedron_map {
+    const Leaf_topology* topology;
+    const Tetrahedron& operator[](Index t) const { return topology->tetrahedron(t); }
+  };
+  Tetrahedron_map tetrahedron_map() const { return Tetrahedron_map{this}; }
   /// @}
 
   /// \name Vertex-tetrahedra (VT)
@@ -205,7 +216,7 @@ public:
   template <class OutputIterator>
   OutputIterator vertex_link(Index v, OutputIterator out) const {
     for (Index t : vertex_tetrahedra(v)) {
-      const Tetrahedron& c = tree_->tetrahedron(t);
+      const Tetrahedron& c = tetrahedron(t);
       const int k = internal::position(c, v);
       const auto& f = internal::link_face[k];
       *out++ = std::array<Index, 3>{{c[f[0]], c[f[1]], c[f[2]]}};
@@ -222,7 +233,7 @@ public:
     return b(vt_offsets_) + b(vt_) + b(tt_) + b(vv_offsets_) + b(vv_) + b(edges_) + b(edge_flags_) +
            b(et_offsets_) + b(et_) + b(el_offsets_) + b(el_) + b(vedge_offsets_) + b(vedge_) + b(triangles_) +
            b(ft_offsets_) + b(ft_) + faces_.capacity_bytes() + b(edge_records_) + b(scratch_) + b(star_) +
-           links_.memory_bytes();
+           links_.memory_bytes() + cells_.memory_bytes();
   }
 
 private:
@@ -232,9 +243,14 @@ private:
     return Index_range(data.data() + offsets[i], data.data() + offsets[i + 1]);
   }
 
-  void build_faces(bool adjacency, bool triangles);
-  void build_vv();
-  void build_edges();
+  template <class Tetrahedra>
+  void build_with(const Tetrahedra& T, unsigned relations);
+  template <class Tetrahedra>
+  void build_faces(const Tetrahedra& T, bool adjacency, bool triangles);
+  template <class Tetrahedra>
+  void build_vv(const Tetrahedra& T);
+  template <class Tetrahedra>
+  void build_edges(const Tetrahedra& T);
 
   struct Edge_record {
     Index a, b, t;
@@ -245,6 +261,8 @@ private:
   Node_index leaf_ = 0;
   unsigned relations_ = 0;
   Index vb_ = 0, ve_ = 0;
+  const Tetrahedron* plain_ = nullptr; // the octree's plain array, or
+  internal::Leaf_cells<Index> cells_;  // the leaf's tetrahedra decoded from the compact one
 
   std::vector<Index> vt_offsets_, vt_;
   std::vector<std::array<Index, 4>> tt_;
@@ -279,10 +297,9 @@ namespace PR_star_octree {
 template <class GT, class I, class OutputIterator>
 OutputIterator vertex_star(const PR_star_octree_3<GT, I>& tree, typename PR_star_octree_3<GT, I>::Index v,
                            OutputIterator out) {
-  for (auto t : tree.leaf_tetrahedra(tree.leaf_of_vertex(v))) {
-    const auto& c = tree.tetrahedron(t);
+  tree.for_each_leaf_tetrahedron(tree.leaf_of_vertex(v), [&](I t, const auto& c) {
     if (c[0] == v || c[1] == v || c[2] == v || c[3] == v) *out++ = t;
-  }
+  });
   return out;
 }
 
@@ -295,21 +312,18 @@ std::array<I, 4> tetrahedron_neighbors(const PR_star_octree_3<GT, I>& tree,
   using Octree = PR_star_octree_3<GT, I>;
   using Index = I;
   std::array<Index, 4> result;
-  const auto& c = tree.tetrahedron(t);
+  const auto c = tree.tetrahedron(t);
   for (int k = 0; k < 4; ++k) {
     result[k] = Leaf_topology<Octree>::no_neighbor;
     const Index a = c[(k + 1) & 3], b = c[(k + 2) & 3], d = c[(k + 3) & 3];
     // Both tetrahedra of the face are in the star of its vertex a, hence in a's leaf.
-    for (Index u : tree.leaf_tetrahedra(tree.leaf_of_vertex(a))) {
-      if (u == t) continue;
-      const auto& x = tree.tetrahedron(u);
+    tree.for_each_leaf_tetrahedron(tree.leaf_of_vertex(a), [&](Index u, const auto& x) {
+      if (u == t) return true;
       int shared = 0;
       for (Index w : x) shared += (w == a) + (w == b) + (w == d);
-      if (shared == 3) {
-        result[k] = u;
-        break;
-      }
-    }
+      if (shared == 3) result[k] = u;
+      return shared != 3; // (stop at the first one)
+    });
   }
   return result;
 }

@@ -65,6 +65,13 @@ struct Statistics {
   double ia_total_per_vertex = 0;
 
   Memory_bytes bytes;
+  bool compact_tetrahedra =
+      false; ///< the tetrahedra are stored compactly (named parameter `compact_tetrahedra`)
+  /// the bytes held per tetrahedron (`bytes.total() / tetrahedra`; 0 without tetrahedra): the one
+  /// figure of compactness that `prstar stats` and the benchmarks report
+  double bytes_per_tetrahedron() const {
+    return tetrahedra ? static_cast<double>(bytes.total()) / static_cast<double>(tetrahedra) : 0.;
+  }
 
   /// the number of tetrahedra of each label (empty when the mesh has no labels)
   std::map<int, std::size_t> subdomains;

@@ -84,7 +84,7 @@ public:
 
   /// classifies vertex `v` (octree numbering) of the leaf of `local` (VT must have been built)
   Vertex_type classify(const Leaf_topology<Octree>& local, Index v) {
-    return classify(local.octree().tetrahedra(), local.vertex_tetrahedra(v), v);
+    return classify(local.tetrahedron_map(), local.vertex_tetrahedra(v), v);
   }
 
   /// classifies vertex `v` from its star `star` (indices into the tetrahedron array `T`)
@@ -145,7 +145,7 @@ void classify_vertices(const Octree& tree, bool with_triangles, std::vector<Vert
         for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
           if (!local.owns_triangle(f) || local.triangle_tetrahedra(f).size() != 1) continue;
           const Index t = *local.triangle_tetrahedra(f).begin();
-          const auto& c = tree.tetrahedron(t);
+          const auto& c = local.tetrahedron(t);
           const auto& tri = local.triangle(f);
           int k = 0;
           while (c[k] == tri[0] || c[k] == tri[1] || c[k] == tri[2]) ++k;

@@ -170,7 +170,7 @@ Vertex_curvature vertex_curvature(const Leaf_topology<Octree>& local, const Fiel
   const Octree& tree = local.octree();
   Angle_sum s3, s4;
   for (auto t : local.vertex_tetrahedra(v)) {
-    const auto& c = tree.tetrahedron(t);
+    const auto& c = local.tetrahedron(t);
     std::array<std::array<double, 3>, 4> p;
     std::array<double, 4> f;
     int k = 0;

@@ -47,6 +47,7 @@ namespace PR_star_octree {
   X(vertex_permutation)                                                                                      \
   X(tetrahedron_permutation)                                                                                 \
   X(concurrency_tag)                                                                                         \
+  X(compact_tetrahedra)                                                                                      \
   X(compression)                                                                                             \
   X(format_version)                                                                                          \
   X(communicator)

@@ -257,7 +257,7 @@ Validity_result check_validity(const PR_star_octree_3<GT, I>& tree,
         Leaf_result lr;
         const auto owned = local.tetrahedra().owned();
         for (Index t = owned.first; t < owned.second; ++t) {
-          const auto& c = tree.tetrahedron(t);
+          const auto& c = local.tetrahedron(t);
           const CGAL::Orientation o =
               orientation(tree.point(c[0]), tree.point(c[1]), tree.point(c[2]), tree.point(c[3]));
           if (o == CGAL::COPLANAR) {

@@ -442,10 +442,14 @@ void write_pvtu(const std::string& file, const Distributed_octree_3<GT>& tree,
   internal::Vtu_piece piece;
   piece.xyz = n ? xyz.data() : &no_double;
   piece.number_of_points = n;
-  // the octree's own array of tetrahedra (four 32-bit indices each, no copy)
+  // the octree's own array of tetrahedra (four 32-bit indices each, no copy), decoded if compact
   static_assert(sizeof(typename Octree::Tetrahedron) == 4 * sizeof(std::uint32_t), "32-bit local indices");
   static const std::uint32_t no_tetrahedron[4] = {0, 0, 0, 0};
-  piece.tetrahedra = nt ? octree.tetrahedra().front().data() : no_tetrahedron;
+  std::vector<typename Octree::Tetrahedron> decoded;
+  if (octree.is_compact()) decoded.assign(octree.tetrahedra().begin(), octree.tetrahedra().end());
+  piece.tetrahedra =
+      nt == 0 ? no_tetrahedron
+              : (octree.is_compact() ? decoded.front().data() : octree.tetrahedra().data()->data());
   piece.number_of_tetrahedra = nt;
   piece.point_ghosts = n ? point_ghosts.data() : &no_ghost;
   piece.cell_ghosts = nt ? cell_ghosts.data() : &no_ghost;

@@ -28,28 +28,41 @@ void Leaf_topology<Octree>::build(const Octree& tree, Node_index leaf, unsigned 
   // Dependencies: VV and edges are built from VT.
   if (relations & (VERTEX_VERTICES | EDGES)) relations |= VERTEX_TETRAHEDRA;
   relations_ = relations;
+  plain_ = tree.tetrahedra().data();
+  if (tree.is_compact()) {
+    // The leaf's tetrahedra are decoded once; every relation is built from this copy.
+    const auto tets = tetrahedra();
+    cells_.decode(tree.compact_tetrahedra(), tets.shared(), tets.owned());
+    build_with(cells_, relations);
+  } else
+    build_with(plain_, relations);
+}
+
+template <class Octree>
+template <class Tetrahedra>
+void Leaf_topology<Octree>::build_with(const Tetrahedra& T, unsigned relations) {
   if (relations & VERTEX_TETRAHEDRA) {
     const auto tets = tetrahedra();
-    internal::build_leaf_vertex_tetrahedra(tree_->tetrahedra().data(), tets.shared(), tets.owned(), vb_,
-                                           ve_ - vb_, vt_offsets_, vt_, scratch_);
+    internal::build_leaf_vertex_tetrahedra(T, tets.shared(), tets.owned(), vb_, ve_ - vb_, vt_offsets_, vt_,
+                                           scratch_);
   }
   if (relations & (TETRAHEDRON_ADJACENCY | TRIANGLES))
-    build_faces(relations & TETRAHEDRON_ADJACENCY, relations & TRIANGLES);
-  if (relations & VERTEX_VERTICES) build_vv();
-  if (relations & EDGES) build_edges();
+    build_faces(T, relations & TETRAHEDRON_ADJACENCY, relations & TRIANGLES);
+  if (relations & VERTEX_VERTICES) build_vv(T);
+  if (relations & EDGES) build_edges(T);
   if (relations & (VERTEX_LINKS | LOCAL_TETRAHEDRA)) {
     const auto tets = tetrahedra();
-    links_.build(tree_->tetrahedra().data(), tets.shared(), tets.owned(), vb_, ve_ - vb_,
-                 !(relations & UNCHECKED_LINKS), (relations & LOCAL_TETRAHEDRA) != 0,
-                 (relations & VERTEX_LINKS) != 0);
+    links_.build(T, tets.shared(), tets.owned(), vb_, ve_ - vb_, !(relations & UNCHECKED_LINKS),
+                 (relations & LOCAL_TETRAHEDRA) != 0, (relations & VERTEX_LINKS) != 0);
   }
 }
 
 // Algorithm 2 and the triangles: the faces with a vertex in the leaf, paired by the kernel.
 template <class Octree>
-void Leaf_topology<Octree>::build_faces(bool adjacency, bool triangles) {
+template <class Tetrahedra>
+void Leaf_topology<Octree>::build_faces(const Tetrahedra& T, bool adjacency, bool triangles) {
   const auto tets = tetrahedra();
-  faces_.build(tree_->tetrahedra(), tets, [this](const std::array<Index, 3>& f) {
+  faces_.build(T, tets, [this](const std::array<Index, 3>& f) {
     return is_local_vertex(f[0]) || is_local_vertex(f[1]) || is_local_vertex(f[2]);
   });
   if (adjacency)
@@ -78,26 +91,28 @@ void Leaf_topology<Octree>::build_faces(bool adjacency, bool triangles) {
 }
 
 template <class Octree>
-void Leaf_topology<Octree>::build_vv() {
+template <class Tetrahedra>
+void Leaf_topology<Octree>::build_vv(const Tetrahedra& T) {
   const std::size_t nv = ve_ - vb_;
   vv_offsets_.assign(1, 0);
   vv_.clear();
   for (std::size_t i = 0; i < nv; ++i) {
     const Index v = static_cast<Index>(vb_ + i);
-    internal::star_neighbors(tree_->tetrahedra(), vertex_tetrahedra(v), v, vv_, vv_.size());
+    internal::star_neighbors(T, vertex_tetrahedra(v), v, vv_, vv_.size());
     vv_offsets_.push_back(static_cast<Index>(vv_.size()));
   }
 }
 
 template <class Octree>
-void Leaf_topology<Octree>::build_edges() {
+template <class Tetrahedra>
+void Leaf_topology<Octree>::build_edges(const Tetrahedra& T) {
   // Every edge with a vertex in the leaf appears in the VT of that vertex.
   const std::size_t nv = ve_ - vb_;
   edge_records_.clear();
   for (std::size_t i = 0; i < nv; ++i) {
     const Index v = static_cast<Index>(vb_ + i);
     for (Index t : vertex_tetrahedra(v))
-      for (Index w : tree_->tetrahedron(t)) {
+      for (Index w : T[t]) {
         if (w == v) continue;
         // Record the edge once: from its smaller local vertex.
         if (is_local_vertex(w) && w < v) continue;
@@ -118,7 +133,7 @@ void Leaf_topology<Octree>::build_edges() {
       [&](auto first, auto last) {
         star_.clear();
         for (auto r = first; r != last; ++r) star_.push_back(r->t);
-        fan_.build(tree_->tetrahedra(), star_, first->a, first->b);
+        fan_.build(T, star_, first->a, first->b);
         et_.insert(et_.end(), fan_.tetrahedra().begin(), fan_.tetrahedra().end());
         el_.insert(el_.end(), fan_.link().begin(), fan_.link().end());
         edges_.push_back(Edge{first->a, first->b});

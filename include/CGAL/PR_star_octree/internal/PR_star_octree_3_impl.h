@@ -245,6 +245,10 @@ void PR_star_octree_3<GT, I>::build_in_place() {
   std::vector<Index>().swap(from_original);
   set_labels_uniform_if_possible();
   build_leaf_lists<ConcurrencyTag>();
+  if (compact_) {
+    compact_tetrahedra_.assign(tetrahedra_.data(), tetrahedra_.size(), points_.size());
+    std::vector<Tetrahedron>().swap(tetrahedra_);
+  }
 }
 
 template <class GT, class I>
@@ -510,7 +514,8 @@ template <class GT, class I>
 typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics() const {
   Statistics s;
   s.vertices = points_.size();
-  s.tetrahedra = tetrahedra_.size();
+  s.tetrahedra = number_of_tetrahedra();
+  s.compact_tetrahedra = compact_;
   s.bucket_size = bucket_size_;
   s.infinite_bucket_size = (bucket_size_ == infinite_bucket_size);
   s.max_depth = max_depth_;
@@ -521,7 +526,7 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
   s.coincident_leaves = coincident_leaves_;
   s.reoriented_tetrahedra = reoriented_count_;
   s.degenerate_tetrahedra = degenerate_tetrahedra_;
-  s.leaf_tetrahedra_entries = leaf_offsets_.size() + tetrahedra_.size();
+  s.leaf_tetrahedra_entries = leaf_offsets_.size() + number_of_tetrahedra();
   for (Node_index n : leaves_) {
     const Node& nd = nodes_[n];
     if (nd.vertex_begin == nd.vertex_end) ++s.empty_leaves;
@@ -531,7 +536,7 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
 
   // Unreferenced and duplicate vertices (coincident points always share a leaf).
   std::vector<bool> referenced(points_.size(), false);
-  for (const Tetrahedron& c : tetrahedra_)
+  for (const Tetrahedron c : tetrahedra())
     for (Index v : c) referenced[v] = true;
   s.unreferenced_vertices = static_cast<std::size_t>(std::count(referenced.begin(), referenced.end(), false));
   std::vector<std::array<double, 3>> xyz;
@@ -550,9 +555,10 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
   s.bytes.scalars = scalars_.capacity() * sizeof(double);
   s.bytes.labels = labels_.capacity() * sizeof(int);
   for (int l : labels_) ++s.subdomains[l];
-  if (has_labels_ && labels_.empty() && !tetrahedra_.empty())
-    s.subdomains[uniform_label_] = tetrahedra_.size();
-  s.bytes.tetrahedra = tetrahedra_.capacity() * sizeof(Tetrahedron);
+  if (has_labels_ && labels_.empty() && number_of_tetrahedra() > 0)
+    s.subdomains[uniform_label_] = number_of_tetrahedra();
+  s.bytes.tetrahedra =
+      compact_ ? compact_tetrahedra_.memory_bytes() : tetrahedra_.capacity() * sizeof(Tetrahedron);
   s.bytes.nodes = nodes_.capacity() * sizeof(Node) + leaves_.capacity() * sizeof(Node_index);
   s.bytes.leaf_tetrahedra =
       leaf_offsets_.capacity() * sizeof(std::uint16_t) +

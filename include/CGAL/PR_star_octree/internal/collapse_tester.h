@@ -32,8 +32,8 @@ public:
   static constexpr Index omega = (std::numeric_limits<Index>::max)(); // the cone vertex of the boundary
 
   // St(e): the tetrahedra of `st2` containing v1.
-  static void edge_star(const std::vector<Tetrahedron>& tets, const std::vector<Index>& st2, Index v1,
-                        std::vector<Index>& out) {
+  template <class Tets>
+  static void edge_star(const Tets& tets, const std::vector<Index>& st2, Index v1, std::vector<Index>& out) {
     out.clear();
     for (Index t : st2)
       if (contains(tets[t], v1)) out.push_back(t);
@@ -41,8 +41,9 @@ public:
 
   // Boundary condition.  Both ends interior, or both on the boundary and `e` on the boundary (its
   // star is an open fan: some triangle (v1, v2, w) has one tetrahedron).  Non-manifold ends never.
-  bool boundary_ok(const std::vector<Tetrahedron>& tets, const std::vector<Index>& st_e, Index v1, Index v2,
-                   Vertex_type t1, Vertex_type t2) {
+  template <class Tets>
+  bool boundary_ok(const Tets& tets, const std::vector<Index>& st_e, Index v1, Index v2, Vertex_type t1,
+                   Vertex_type t2) {
     if (t1 != t2) return false;
     if (t1 == Vertex_type::INTERIOR) return true;
     if (t1 != Vertex_type::BOUNDARY) return false;
@@ -51,12 +52,12 @@ public:
   }
 
   // Geometric condition, with the exact orientation predicate of the traits.
-  bool geometry_ok(const GeomTraits& gt, const std::vector<Point_3>& points,
-                   const std::vector<Tetrahedron>& tets, const std::vector<Index>& st2, Index v1,
-                   Index v2) const {
+  template <class Tets>
+  bool geometry_ok(const GeomTraits& gt, const std::vector<Point_3>& points, const Tets& tets,
+                   const std::vector<Index>& st2, Index v1, Index v2) const {
     auto orientation = gt.orientation_3_object();
     for (Index t : st2) {
-      const Tetrahedron& c = tets[t];
+      const auto& c = tets[t];
       if (contains(c, v1)) continue; // in St(e): deleted
       const Point_3* p[4];
       for (int k = 0; k < 4; ++k) p[k] = &points[c[k] == v2 ? v1 : c[k]];
@@ -68,8 +69,9 @@ public:
   // Link condition Lk(v1) ∩ Lk(v2) = Lk(e) on vertices, edges and triangles, the boundary being
   // coned to the dummy vertex `omega` (Dey, Edelsbrunner, Guha, Nekhayev), so that it also
   // preserves the boundary surface.  Lk(e) is always in the intersection: comparing sizes is enough.
-  bool link_ok(const std::vector<Tetrahedron>& tets, const std::vector<Index>& st1,
-               const std::vector<Index>& st2, const std::vector<Index>& st_e, Index v1, Index v2) {
+  template <class Tets>
+  bool link_ok(const Tets& tets, const std::vector<Index>& st1, const std::vector<Index>& st2,
+               const std::vector<Index>& st_e, Index v1, Index v2) {
     coned_link(tets, st1, v1, lv1_, le1_, lt1_);
     coned_link(tets, st2, v2, lv2_, le2_, lt2_);
     // Lk(e): the edges opposite e, and (w, omega) for the boundary triangles (v1, v2, w).
@@ -98,8 +100,9 @@ private:
 
   // The link of v (from the kernel) in the complex whose boundary is coned to omega: sorted
   // vertex, edge and triangle sets.
-  void coned_link(const std::vector<Tetrahedron>& tets, const std::vector<Index>& st, Index v,
-                  std::vector<Index>& lv, std::vector<Edge>& le, std::vector<Triangle>& lt) {
+  template <class Tets>
+  void coned_link(const Tets& tets, const std::vector<Index>& st, Index v, std::vector<Index>& lv,
+                  std::vector<Edge>& le, std::vector<Triangle>& lt) {
     link_.build(tets, st, v, /* with vertices */ true, /* stop at non-manifold */ false);
     lv.assign(link_.vertices().begin(), link_.vertices().end());
     le.clear();

@@ -99,8 +99,8 @@ std::size_t intersection_size(const Vector& a, const Vector& b) {
 // (vertex slot, tetrahedron) pairs, without a branch (a corner outside the leaf is written, then
 // overwritten); a counting sort of the pairs follows.  (Counting the corners outside in a dummy
 // slot instead serialises the loop on that slot's counter.)
-template <class Tetrahedron, class Shared, class Index>
-void build_leaf_vertex_tetrahedra(const Tetrahedron* T, const Shared& shared, std::pair<Index, Index> owned,
+template <class Tetrahedra, class Shared, class Index>
+void build_leaf_vertex_tetrahedra(const Tetrahedra& T, const Shared& shared, std::pair<Index, Index> owned,
                                   Index vb, std::size_t nv, std::vector<Index>& offsets,
                                   std::vector<Index>& vt, std::vector<Index>& scratch) {
   const std::size_t n_shared = static_cast<std::size_t>(std::distance(shared.begin(), shared.end()));
@@ -109,7 +109,7 @@ void build_leaf_vertex_tetrahedra(const Tetrahedron* T, const Shared& shared, st
   Index* corners = scratch.data();
   std::size_t m = 0;
   auto add = [&](Index t) {
-    const Tetrahedron& c = T[t];
+    const auto& c = T[t];
     for (int k = 0; k < 4; ++k) {
       const std::size_t d = static_cast<Index>(c[k] - vb); // wraps around for c[k] < vb
       corners[2 * m] = static_cast<Index>(d);
@@ -581,8 +581,8 @@ public:
   // contiguous range `owned` of T (together: every tetrahedron incident in those vertices).
   // With `keep_tetrahedra`, the leaf's tetrahedra are also kept in local ids (see `tetrahedron()`).
   // Without `classify`, only the local ids (and the tetrahedra, when kept) are built.
-  template <class Tetrahedron, class Shared>
-  void build(const Tetrahedron* T, const Shared& shared, std::pair<Index, Index> owned, Index vb,
+  template <class Tetrahedra, class Shared>
+  void build(const Tetrahedra& T, const Shared& shared, std::pair<Index, Index> owned, Index vb,
              std::size_t nv, bool check_links, bool keep_tetrahedra = false, bool classify_links = true) {
     if (keep_tetrahedra) // (a constant in the loop over the tetrahedra)
       gather<true>(T, shared, owned, vb, nv);
@@ -617,8 +617,8 @@ private:
   // Local ids and the CSR of the link triangles of each leaf vertex: one pass over the
   // tetrahedra appends the link triangle of each corner in the leaf (branch-free, as VT), then a
   // counting sort groups them by vertex.
-  template <bool keep_tetrahedra, class Tetrahedron, class Shared>
-  void gather(const Tetrahedron* T, const Shared& shared, std::pair<Index, Index> owned, Index vb,
+  template <bool keep_tetrahedra, class Tetrahedra, class Shared>
+  void gather(const Tetrahedra& T, const Shared& shared, std::pair<Index, Index> owned, Index vb,
               std::size_t nv) {
     const std::size_t n_tets =
         static_cast<std::size_t>(std::distance(shared.begin(), shared.end())) + (owned.second - owned.first);
@@ -639,7 +639,7 @@ private:
     Corner* corners = corners_.data();
     std::size_t m = 0, n = 0;
     auto add = [&](Index t) {
-      const Tetrahedron& c = T[t];
+      const auto& c = T[t];
       const std::array<std::uint32_t, 4> l{{id(c[0]), id(c[1]), id(c[2]), id(c[3])}};
       for (int k = 0; k < 4; ++k) {
         corners[m] = Corner{l[k], {{l[link_face[k][0]], l[link_face[k][1]], l[link_face[k][2]]}}};

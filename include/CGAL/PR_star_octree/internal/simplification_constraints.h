@@ -91,8 +91,8 @@ struct Surface_constraints {
 // `feature_angle` in degrees: a surface edge is sharp when its two surface triangles deviate
 // from flat by more than it.  `constrained_vertex(v)` and `constrained_edge(a, b)` add the
 // user's constraints (corners and feature edges).
-template <class Tetrahedron, class Index, class ConstrainedVertex, class ConstrainedEdge>
-void compute_surface_constraints(const std::vector<Vec3>& points, const std::vector<Tetrahedron>& tets,
+template <class Tetrahedra, class Index, class ConstrainedVertex, class ConstrainedEdge>
+void compute_surface_constraints(const std::vector<Vec3>& points, const Tetrahedra& tets,
                                  const std::vector<int>& labels, double feature_angle, bool with_quadrics,
                                  ConstrainedVertex constrained_vertex, ConstrainedEdge constrained_edge,
                                  Surface_constraints<Index>& out) {
@@ -111,15 +111,18 @@ void compute_surface_constraints(const std::vector<Vec3>& points, const std::vec
   };
   std::vector<Face> faces;
   faces.reserve(4 * tets.size());
-  for (std::size_t t = 0; t < tets.size(); ++t)
+  std::size_t t = 0;
+  for (auto it = tets.begin(); it != tets.end(); ++it, ++t) { // (iterators decode in one pass)
+    const auto c = *it;
     for (int k = 0; k < 4; ++k) {
       Face f;
-      for (int i = 0; i < 3; ++i) f.v[i] = tets[t][link_face[k][i]];
+      for (int i = 0; i < 3; ++i) f.v[i] = c[link_face[k][i]];
       std::sort(f.v.begin(), f.v.end());
       f.t = static_cast<Index>(t);
       f.k = k;
       faces.push_back(f);
     }
+  }
   std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.v < b.v; });
   // Patches: the surface triangles with a key, the pair of labels on its sides (-1: outside).
   std::vector<std::pair<int, int>> patch;

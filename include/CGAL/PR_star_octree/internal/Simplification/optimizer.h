@@ -61,14 +61,16 @@ std::map<int, double> label_surface_areas(const std::vector<Vec3>& points, const
   };
   std::vector<Face> faces;
   faces.reserve(4 * tets.size());
-  for (std::size_t t = 0; t < tets.size(); ++t)
+  std::size_t t = 0;
+  for (auto it = tets.begin(); it != tets.end(); ++it, ++t) { // (iterators decode in one pass)
+    const auto c = *it;
     for (int k = 0; k < 4; ++k) {
-      Face f{{{std::size_t(tets[t][(k + 1) % 4]), std::size_t(tets[t][(k + 2) % 4]),
-               std::size_t(tets[t][(k + 3) % 4])}},
+      Face f{{{std::size_t(c[(k + 1) % 4]), std::size_t(c[(k + 2) % 4]), std::size_t(c[(k + 3) % 4])}},
              labels.empty() ? 0 : labels[t]};
       std::sort(f.v.begin(), f.v.end());
       faces.push_back(f);
     }
+  }
   std::sort(faces.begin(), faces.end());
   std::map<int, double> area;
   auto add = [&](const Face& f) {

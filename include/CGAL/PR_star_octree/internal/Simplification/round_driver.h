@@ -243,8 +243,9 @@ private:
     input_volumes_.clear();
     surface_offset_.clear();
     label_areas_ = label_surface_areas(input_pos_, tree.tetrahedra(), tet_labels);
-    for (std::size_t t = 0; t < tree.number_of_tetrahedra(); ++t) {
-      const auto& c = tree.tetrahedra()[t];
+    std::size_t t = 0;
+    for (auto it = tree.tetrahedra().begin(); t < tree.number_of_tetrahedra(); ++it, ++t) {
+      const auto c = *it;
       const Vec3 &p = input_pos_[c[0]], &q = input_pos_[c[1]], &r = input_pos_[c[2]], &s = input_pos_[c[3]];
       input_volumes_[tet_labels.empty() ? 0 : tet_labels[t]] +=
           dot(minus(q, p), cross(minus(r, p), minus(s, p))) / 6;
@@ -276,11 +277,12 @@ private:
     auto squared_distance = gt_.compute_squared_distance_3_object();
     std::vector<double> lengths;
     const std::size_t stride = (std::max)(std::size_t(1), tets.size() / 16384);
-    for (std::size_t t = 0; t < tets.size(); t += stride)
+    for (std::size_t t = 0; t < tets.size(); t += stride) {
+      const auto c = tets[t];
       for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j)
-          lengths.push_back(
-              std::sqrt(CGAL::to_double(squared_distance(points[tets[t][i]], points[tets[t][j]]))));
+          lengths.push_back(std::sqrt(CGAL::to_double(squared_distance(points[c[i]], points[c[j]]))));
+    }
     if (lengths.empty()) return 0;
     const std::size_t k =
         (std::min)(lengths.size() - 1, static_cast<std::size_t>(q * double(lengths.size())));

@@ -1,0 +1,392 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_INTERNAL_COMPACT_TETRAHEDRA_H
+#define CGAL_PR_STAR_OCTREE_INTERNAL_COMPACT_TETRAHEDRA_H
+
+// The compact tetrahedron array of the octree (named parameter `compact_tetrahedra`).
+//
+// The octree's array T is sorted by smallest vertex, in the depth-first vertex order of the leaves,
+// so a tetrahedron's other vertices are mostly close to its smallest one.  The encoding keeps every
+// tetrahedron exactly (its four vertices in their order):
+// - the smallest vertex is implicit: `counts[v]` is the number of tetrahedra whose smallest vertex
+//   is `v` (one byte; 255 means "look it up in `big_counts`");
+// - each tetrahedron is one control byte and three little-endian differences: bits 0-1 of the
+//   control byte give the position of the smallest vertex `m`, bits 2-7 the byte lengths of the
+//   differences `x - m - 1` of the three others, taken cyclically after `m`;
+// - every `block_size` tetrahedra, an entry of `blocks` holds the byte offset of the block, its
+//   first smallest vertex and how many tetrahedra of that vertex come before the block, so that
+//   tetrahedron `t` is found by skipping at most `block_size - 1` records.
+// A cursor decodes consecutive tetrahedra in one pass.
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <iterator>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace PR_star_octree {
+namespace internal {
+
+template <class Index>
+class Compact_tetrahedra {
+  static_assert(std::is_unsigned<Index>::value, "");
+
+public:
+  using Tetrahedron = std::array<Index, 4>;
+  static constexpr std::size_t block_size = 64;
+
+  // the byte lengths of the codes 0..3 of a difference
+  static constexpr unsigned length_of(unsigned code) {
+    return sizeof(Index) <= 4 ? code + 1 : (code == 3 ? 8u : 1u << code);
+  }
+
+  struct Block {
+    std::uint64_t offset; // of the block's first record in `bytes`
+    Index vertex;         // the smallest vertex of its first tetrahedron
+    Index rank;           // the number of tetrahedra of `vertex` before the block
+  };
+
+  Compact_tetrahedra() { make_record_lengths(); }
+
+  // Encodes `nt` tetrahedra of vertices in `[0, nv)`, sorted by smallest vertex (non-decreasing),
+  // each with four distinct vertices.
+  // \throws std::invalid_argument otherwise
+  void assign(const Tetrahedron* T, std::size_t nt, std::size_t nv) {
+    size_ = nt;
+    bytes_.clear();
+    blocks_.clear();
+    big_counts_.clear();
+    counts_.assign(nv, 0);
+    std::vector<std::pair<Index, std::size_t>> big; // vertices owning 255 or more tetrahedra
+    Index current = 0;
+    std::size_t rank = 0;
+    bytes_.reserve(nt * 5 + 8);
+    blocks_.reserve(nt / block_size + 1);
+    for (std::size_t t = 0; t < nt; ++t) {
+      const Tetrahedron& c = T[t];
+      int p = 0;
+      for (int k = 1; k < 4; ++k)
+        if (c[k] < c[p]) p = k;
+      const Index m = c[p];
+      if (m >= nv || (t > 0 && m < current))
+        throw std::invalid_argument("Compact_tetrahedra: the tetrahedra are not sorted by smallest vertex");
+      if (t == 0 || m != current) {
+        current = m;
+        rank = 0;
+      }
+      if (t % block_size == 0) blocks_.push_back(Block{bytes_.size(), m, static_cast<Index>(rank)});
+      ++rank;
+      if (counts_[m] < 255) {
+        if (++counts_[m] == 255) big.emplace_back(m, 255);
+      } else
+        ++big.back().second;
+      if (c[0] == c[1] || c[0] == c[2] || c[0] == c[3] || c[1] == c[2] || c[1] == c[3] || c[2] == c[3])
+        throw std::invalid_argument("Compact_tetrahedra: a tetrahedron with a repeated vertex");
+      std::uint64_t d[3];
+      unsigned control = static_cast<unsigned>(p);
+      for (int k = 0; k < 3; ++k) {
+        const Index x = c[(p + 1 + k) & 3];
+        if (x >= nv)
+          throw std::invalid_argument("Compact_tetrahedra: a tetrahedron with an out-of-range vertex");
+        d[k] = static_cast<std::uint64_t>(x - m - 1);
+        unsigned code = 0;
+        while (code < 3 && (d[k] >> (8 * length_of(code))) != 0) ++code;
+        control |= code << (2 + 2 * k);
+      }
+      bytes_.push_back(static_cast<unsigned char>(control));
+      for (int k = 0; k < 3; ++k) {
+        const unsigned len = length_of((control >> (2 + 2 * k)) & 3u);
+        for (unsigned b = 0; b < len; ++b) bytes_.push_back(static_cast<unsigned char>(d[k] >> (8 * b)));
+      }
+    }
+    bytes_.resize(bytes_.size() + 8, 0); // so that a difference is always read as one 8-byte load
+    bytes_.shrink_to_fit();
+    blocks_.shrink_to_fit();
+    big_counts_.reserve(big.size());
+    for (const auto& b : big) big_counts_.emplace_back(b.first, static_cast<Index>(b.second));
+  }
+
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+
+  // the bytes held (capacities)
+  std::size_t memory_bytes() const {
+    return bytes_.capacity() + counts_.capacity() + blocks_.capacity() * sizeof(Block) +
+           big_counts_.capacity() * sizeof(std::pair<Index, Index>);
+  }
+
+  // the number of tetrahedra whose smallest vertex is `v`
+  std::size_t count(Index v) const {
+    const unsigned char c = counts_[v];
+    if (c < 255) return c;
+    const auto it = std::lower_bound(big_counts_.begin(), big_counts_.end(), v,
+                                     [](const std::pair<Index, Index>& a, Index x) { return a.first < x; });
+    return it->second;
+  }
+
+  // Decodes consecutive tetrahedra from any position.
+  class Cursor {
+  public:
+    Cursor() = default;
+    // positioned on tetrahedron `t` (`t == size()` is the end)
+    Cursor(const Compact_tetrahedra& a, std::size_t t) : a_(&a) { seek(t); }
+
+    std::size_t position() const { return t_; }
+    void seek(std::size_t t) {
+      if (t_ != npos && t >= t_ && t - t_ < block_size && t_ < a_->size_ && t <= a_->size_) {
+        skip(t - t_);
+        return;
+      }
+      t_ = t;
+      if (t >= a_->size_) return;
+      const Block& b = a_->blocks_[t / block_size];
+      offset_ = b.offset;
+      vertex_ = b.vertex;
+      rank_ = b.rank;
+      t_ = t - t % block_size;
+      skip(t % block_size);
+    }
+    // the tetrahedron at the position; \pre `position() < size()`
+    Tetrahedron operator*() const {
+      const unsigned char* r = a_->bytes_.data() + offset_;
+      const unsigned control = r[0];
+      const unsigned p = control & 3u;
+      const unsigned l0 = length_of((control >> 2) & 3u), l1 = length_of((control >> 4) & 3u),
+                     l2 = length_of((control >> 6) & 3u);
+      Tetrahedron c;
+      c[p] = vertex_;
+      c[(p + 1) & 3] = static_cast<Index>(vertex_ + 1 + load(r + 1, l0));
+      c[(p + 2) & 3] = static_cast<Index>(vertex_ + 1 + load(r + 1 + l0, l1));
+      c[(p + 3) & 3] = static_cast<Index>(vertex_ + 1 + load(r + 1 + l0 + l1, l2));
+      return c;
+    }
+    Cursor& operator++() {
+      offset_ += a_->record_length_[a_->bytes_[offset_]];
+      ++t_;
+      ++rank_;
+      if (--left_ == 0 && t_ < a_->size_) settle();
+      return *this;
+    }
+
+  private:
+    static constexpr std::size_t npos = ~std::size_t(0);
+    // the difference of `len` bytes at `r` (the 8 bytes of padding make the 8-byte load safe)
+    static std::uint64_t load(const unsigned char* r, unsigned len) {
+      std::uint64_t d;
+      std::memcpy(&d, r, sizeof d);
+      if (!host_is_little_endian()) {
+        std::uint64_t y = 0;
+        for (int i = 0; i < 8; ++i) y = (y << 8) | ((d >> (8 * i)) & 0xff);
+        d = y;
+      }
+      return len < 8 ? d & ((std::uint64_t(1) << (8 * len)) - 1) : d;
+    }
+    static bool host_is_little_endian() {
+      const std::uint16_t probe = 1;
+      unsigned char first;
+      std::memcpy(&first, &probe, 1);
+      return first == 1;
+    }
+    // moves on to the vertex that owns the tetrahedron at the position
+    void settle() {
+      std::size_t n;
+      while (rank_ >= (n = a_->count(vertex_))) {
+        ++vertex_;
+        rank_ = 0;
+      }
+      left_ = n - rank_;
+    }
+    void skip(std::size_t n) {
+      settle();
+      while (n > 0) {
+        const std::size_t k = (std::min)(n, left_);
+        for (std::size_t i = 0; i < k; ++i) offset_ += a_->record_length_[a_->bytes_[offset_]];
+        t_ += k;
+        rank_ += k;
+        left_ -= k;
+        n -= k;
+        if (left_ == 0 && t_ < a_->size_) settle();
+      }
+    }
+
+    const Compact_tetrahedra* a_ = nullptr;
+    std::size_t t_ = npos;
+    std::uint64_t offset_ = 0;
+    Index vertex_ = 0;
+    std::size_t rank_ = 0;
+    std::size_t left_ = 0; // the tetrahedra of `vertex_` from the position on
+  };
+
+  // tetrahedron `t` (random access: at most `block_size - 1` records skipped)
+  Tetrahedron operator[](std::size_t t) const { return *Cursor(*this, t); }
+
+  // decodes the tetrahedra `[first, last)` into `out`
+  template <class OutputIterator>
+  OutputIterator decode(std::size_t first, std::size_t last, OutputIterator out) const {
+    if (first >= last) return out;
+    Cursor c(*this, first);
+    for (std::size_t t = first; t < last; ++t, ++c) *out++ = *c;
+    return out;
+  }
+
+private:
+  void make_record_lengths() {
+    for (unsigned control = 0; control < 256; ++control) {
+      unsigned n = 1;
+      for (unsigned k = 0; k < 3; ++k) n += length_of((control >> (2 + 2 * k)) & 3u);
+      record_length_[control] = static_cast<unsigned char>(n);
+    }
+  }
+
+  std::size_t size_ = 0;
+  std::vector<unsigned char> bytes_;
+  std::vector<unsigned char> counts_;
+  std::vector<std::pair<Index, Index>> big_counts_;
+  std::vector<Block> blocks_;
+  unsigned char record_length_[256];
+};
+
+// The tetrahedron array of the octree as a random-access range of `std::array<Index, 4>` values,
+// plain or compact.  Its iterator decodes consecutive tetrahedra in one pass; `operator[]` is random
+// access (a few records skipped in the compact form).
+template <class Index>
+class Tetrahedra_view {
+public:
+  using Tetrahedron = std::array<Index, 4>;
+  using Compact = Compact_tetrahedra<Index>;
+
+  class iterator {
+  public:
+    using iterator_category = std::random_access_iterator_tag;
+    using value_type = Tetrahedron;
+    using difference_type = std::ptrdiff_t;
+    using pointer = void;
+    using reference = Tetrahedron; // by value: the compact form has no array to point into
+
+    iterator() = default;
+    iterator(const Tetrahedra_view* v, std::size_t t) : plain_(v->plain_), t_(t) {
+      if (v->compact_ != nullptr) cursor_ = typename Compact::Cursor(*v->compact_, t);
+      compact_ = v->compact_;
+    }
+    Tetrahedron operator*() const { return compact_ ? *cursor_ : plain_[t_]; }
+    Tetrahedron operator[](difference_type d) const { return *(*this + d); }
+    iterator& operator++() {
+      ++t_;
+      if (compact_) ++cursor_;
+      return *this;
+    }
+    iterator operator++(int) {
+      iterator c = *this;
+      ++*this;
+      return c;
+    }
+    iterator& operator--() { return *this -= 1; }
+    iterator operator--(int) {
+      iterator c = *this;
+      --*this;
+      return c;
+    }
+    iterator& operator+=(difference_type d) {
+      t_ = static_cast<std::size_t>(static_cast<difference_type>(t_) + d);
+      if (compact_) cursor_.seek(t_);
+      return *this;
+    }
+    iterator& operator-=(difference_type d) { return *this += -d; }
+    friend iterator operator+(iterator a, difference_type d) { return a += d; }
+    friend iterator operator+(difference_type d, iterator a) { return a += d; }
+    friend iterator operator-(iterator a, difference_type d) { return a -= d; }
+    friend difference_type operator-(const iterator& a, const iterator& b) {
+      return static_cast<difference_type>(a.t_) - static_cast<difference_type>(b.t_);
+    }
+    friend bool operator==(const iterator& a, const iterator& b) { return a.t_ == b.t_; }
+    friend bool operator!=(const iterator& a, const iterator& b) { return a.t_ != b.t_; }
+    friend bool operator<(const iterator& a, const iterator& b) { return a.t_ < b.t_; }
+    friend bool operator>(const iterator& a, const iterator& b) { return a.t_ > b.t_; }
+    friend bool operator<=(const iterator& a, const iterator& b) { return a.t_ <= b.t_; }
+    friend bool operator>=(const iterator& a, const iterator& b) { return a.t_ >= b.t_; }
+
+  private:
+    const Tetrahedron* plain_ = nullptr;
+    const Compact* compact_ = nullptr;
+    typename Compact::Cursor cursor_;
+    std::size_t t_ = 0;
+  };
+  using const_iterator = iterator;
+  using value_type = Tetrahedron;
+  using size_type = std::size_t;
+
+  Tetrahedra_view(const Tetrahedron* plain, std::size_t n) : plain_(plain), n_(n) {}
+  explicit Tetrahedra_view(const Compact& compact) : compact_(&compact), n_(compact.size()) {}
+
+  std::size_t size() const { return n_; }
+  bool empty() const { return n_ == 0; }
+  bool is_compact() const { return compact_ != nullptr; }
+  /// the plain array, or `nullptr` in the compact form
+  const Tetrahedron* data() const { return compact_ ? nullptr : plain_; }
+  Tetrahedron operator[](std::size_t t) const { return compact_ ? (*compact_)[t] : plain_[t]; }
+  iterator begin() const { return iterator(this, 0); }
+  iterator end() const { return iterator(this, n_); }
+
+private:
+  const Tetrahedron* plain_ = nullptr;
+  const Compact* compact_ = nullptr;
+  std::size_t n_ = 0;
+};
+
+// The tetrahedra of one leaf's list, decoded once from the compact array, indexed by their index
+// in T: `operator[](t)` for `t` in the list (the owned range directly, a shared one by binary
+// search in the listed indices).  Plain arrays are indexed through a pointer instead.
+template <class Index>
+class Leaf_cells {
+public:
+  using Tetrahedron = std::array<Index, 4>;
+
+  // decodes the tetrahedra `shared` (increasing), then the owned range, of `T`
+  template <class Shared>
+  void decode(const Compact_tetrahedra<Index>& T, const Shared& shared, std::pair<Index, Index> owned) {
+    ids_.clear();
+    cells_.clear();
+    typename Compact_tetrahedra<Index>::Cursor c(T, owned.first);
+    for (Index t : shared) {
+      c.seek(t);
+      ids_.push_back(t);
+      cells_.push_back(*c);
+    }
+    n_shared_ = ids_.size();
+    owned_ = owned;
+    c.seek(owned.first);
+    for (Index t = owned.first; t < owned.second; ++t, ++c) cells_.push_back(*c);
+  }
+  // tetrahedron `t` of T; \pre `t` is in the list
+  const Tetrahedron& operator[](Index t) const {
+    const std::size_t d = static_cast<Index>(t - owned_.first);
+    if (d < static_cast<std::size_t>(owned_.second - owned_.first)) return cells_[n_shared_ + d];
+    return cells_[static_cast<std::size_t>(std::lower_bound(ids_.begin(), ids_.end(), t) - ids_.begin())];
+  }
+  // the tetrahedra in the order of the list
+  const std::vector<Tetrahedron>& in_list_order() const { return cells_; }
+  std::size_t memory_bytes() const {
+    return ids_.capacity() * sizeof(Index) + cells_.capacity() * sizeof(Tetrahedron);
+  }
+
+private:
+  std::vector<Index> ids_;
+  std::vector<Tetrahedron> cells_;
+  std::size_t n_shared_ = 0;
+  std::pair<Index, Index> owned_{0, 0};
+};
+
+} // namespace internal
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_INTERNAL_COMPACT_TETRAHEDRA_H
