@@ -137,6 +137,24 @@ foreach(pair "vertices\": 343," "tetrahedra\": 1296," "boundary_triangles\": 432
 endforeach()
 run(0 "\"interior_vertices\": 125," "" boundary ${WORK}/lattice.vtu --json)
 run(0 "\"valid\": true" "" validate ${WORK}/lattice.vtu --json)
+# --compact (issue 24): the same closed-form counts from the compact tetrahedron array, which
+# stats reports with fewer bytes per tetrahedron than the plain one (16 bytes each).
+foreach(kv 1 50)
+  run(0 "\"compact_tetrahedra\": true" "" stats ${WORK}/lattice.vtu --kv ${kv} --compact --json)
+  foreach(pair "vertices\": 343," "tetrahedra\": 1296," "boundary_triangles\": 432," "euler_characteristic\": 1,")
+    if(NOT last_out MATCHES "\"${pair}")
+      message(SEND_ERROR "lattice stats --compact: expected ${pair} in ${last_out}")
+    endif()
+  endforeach()
+  string(JSON compact_tets GET "${last_out}" storage bytes_per_tetrahedron_detail tetrahedra)
+  run(0 "\"compact_tetrahedra\": false" "" stats ${WORK}/lattice.vtu --kv ${kv} --json)
+  string(JSON plain_tets GET "${last_out}" storage bytes_per_tetrahedron_detail tetrahedra)
+  if(NOT plain_tets EQUAL 16 OR NOT compact_tets LESS 8)
+    message(SEND_ERROR "stats: ${compact_tets} bytes per tetrahedron compact, ${plain_tets} plain")
+  endif()
+  run(0 "\"interior_vertices\": 125," "" boundary ${WORK}/lattice.vtu --kv ${kv} --compact --json)
+  run(0 "\"valid\": true" "" validate ${WORK}/lattice.vtu --kv ${kv} --compact --json)
+endforeach()
 # --max-memory (issue 10, item 8): a mesh announced bigger than the limit is refused from its header,
 # with the counts and the way out; a sufficient limit reads it.  The lattice needs 343 x 24 +
 # 1296 x 17 bytes (points, tetrahedra, cell types) plus its arrays: over 20 KB, under 1 MB.
