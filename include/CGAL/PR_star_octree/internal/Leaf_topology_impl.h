@@ -33,7 +33,7 @@ void Leaf_topology<Octree>::build(const Octree& tree, Node_index leaf, unsigned 
     // The leaf's tetrahedra are decoded once; every relation is built from this copy.
     const auto tets = tetrahedra();
     cells_.decode(tree.compact_tetrahedra(), tets.shared(), tets.owned());
-    build_with(cells_, relations);
+    build_with(typename internal::Leaf_cells<Index>::Reader(cells_), relations);
   } else
     build_with(plain_, relations);
 }

@@ -368,10 +368,21 @@ public:
   }
   // tetrahedron `t` of T; \pre `t` is in the list
   const Tetrahedron& operator[](Index t) const {
-    const std::size_t d = static_cast<Index>(t - owned_.first);
-    if (d < static_cast<std::size_t>(owned_.second - owned_.first)) return cells_[n_shared_ + d];
-    return cells_[static_cast<std::size_t>(std::lower_bound(ids_.begin(), ids_.end(), t) - ids_.begin())];
+    std::size_t hint = n_shared_;
+    return find(t, hint);
   }
+  // The same, for one thread reading the list mostly in its order: a shared tetrahedron is looked
+  // for first next to the previous one found, then by binary search.
+  class Reader {
+  public:
+    explicit Reader(const Leaf_cells& cells) : cells_(&cells) {}
+    const Tetrahedron& operator[](Index t) const { return cells_->find(t, next_); }
+
+  private:
+    const Leaf_cells* cells_;
+    mutable std::size_t next_ = 0;
+  };
+
   // the tetrahedra in the order of the list
   const std::vector<Tetrahedron>& in_list_order() const { return cells_; }
   std::size_t memory_bytes() const {
@@ -379,9 +390,19 @@ public:
   }
 
 private:
+  // `next`: where to look first for a shared tetrahedron, then the position after the one found
+  const Tetrahedron& find(Index t, std::size_t& next) const {
+    const std::size_t d = static_cast<Index>(t - owned_.first);
+    if (d < static_cast<std::size_t>(owned_.second - owned_.first)) return cells_[n_shared_ + d];
+    if (next >= n_shared_ || ids_[next] != t)
+      next = static_cast<std::size_t>(std::lower_bound(ids_.begin(), ids_.end(), t) - ids_.begin());
+    return cells_[next++];
+  }
+
   std::vector<Index> ids_;
   std::vector<Tetrahedron> cells_;
   std::size_t n_shared_ = 0;
+
   std::pair<Index, Index> owned_{0, 0};
 };
 
