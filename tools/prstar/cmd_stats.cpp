@@ -51,7 +51,7 @@ void statistics_json(prstar::Json& j, const CGAL::PR_star_octree::Statistics& s,
   j.field("compact_tetrahedra", s.compact_tetrahedra);
   // the same figures per tetrahedron (the one measure of compactness, as in the benchmarks)
   const double per_tet = s.tetrahedra ? 1. / double(s.tetrahedra) : 0.;
-  j.field("bytes_per_tetrahedron", double(s.bytes.total()) * per_tet);
+  j.field("bytes_per_tetrahedron", s.bytes_per_tetrahedron());
   j.key("bytes_per_tetrahedron_detail").begin_object();
   j.field("points", double(s.bytes.points) * per_tet).field("scalars", double(s.bytes.scalars) * per_tet);
   j.field("tetrahedra", double(s.bytes.tetrahedra) * per_tet)
@@ -191,9 +191,7 @@ void report_statistics(Mesh mesh, const std::string& name, const std::vector<std
     t.add({bucket_size_string(kvs[i]), std::to_string(s.nodes), std::to_string(s.leaves),
            std::to_string(s.depth), fixed(s.chi, 3), fixed(s.prstar_overhead_per_vertex, 2),
            fixed(s.prstar_total_per_vertex, 2), human_bytes(double(s.bytes.index())),
-           human_bytes(double(s.bytes.total())),
-           fixed(s.tetrahedra ? double(s.bytes.total()) / double(s.tetrahedra) : 0., 1),
-           fixed(seconds[i], 3)});
+           human_bytes(double(s.bytes.total())), fixed(s.bytes_per_tetrahedron(), 1), fixed(seconds[i], 3)});
   }
   std::cout << t.str();
   for (std::size_t i = 0; i < stats.size(); ++i) {
