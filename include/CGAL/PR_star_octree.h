@@ -17,6 +17,7 @@
 #include <CGAL/PR_star_octree/Index_arrays_input.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 #include <CGAL/PR_star_octree/Statistics.h>
+#include <CGAL/PR_star_octree/bucket_size.h>
 #include <CGAL/PR_star_octree/internal/compact_tetrahedra.h>
 #include <CGAL/PR_star_octree/internal/concept_checks.h>
 #include <CGAL/PR_star_octree/internal/leaf_tetrahedra.h>
@@ -117,7 +118,10 @@ public:
   static constexpr Node_index no_node = (std::numeric_limits<Index>::max)();
   /// `k_v = infinity`: a single leaf, the global baseline
   static constexpr std::size_t infinite_bucket_size = (std::numeric_limits<std::size_t>::max)();
-  static constexpr std::size_t default_bucket_size = 50;
+  /// `k_v` chosen by the octree from the mesh (`CGAL::PR_star_octree::choose_bucket_size()`)
+  static constexpr std::size_t automatic_bucket_size = PR_star_octree::automatic_bucket_size;
+  /// the default of the named parameter `bucket_size`: `automatic_bucket_size`
+  static constexpr std::size_t default_bucket_size = automatic_bucket_size;
   static constexpr std::size_t default_max_depth = 32;
 
   /// \name Creation
@@ -133,9 +137,18 @@ public:
   ///
   /// \cgalNamedParamsBegin
   ///   \cgalParamNBegin{bucket_size}
-  ///     \cgalParamDescription{the bucket threshold `k_v` (at least 1), or `infinite_bucket_size`}
+  ///     \cgalParamDescription{the bucket threshold `k_v` (at least 1), `infinite_bucket_size`, or
+  ///     `automatic_bucket_size`: chosen from the number of vertices and tetrahedra, the relations of
+  ///     `bucket_size_relations` and the cache by `CGAL::PR_star_octree::choose_bucket_size()` (the
+  ///     choice is reported by `bucket_size()` and `statistics()`)}
   ///     \cgalParamType{`std::size_t`}
-  ///     \cgalParamDefault{`default_bucket_size` (50)}
+  ///     \cgalParamDefault{`automatic_bucket_size`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{bucket_size_relations}
+  ///     \cgalParamDescription{the relations (a combination of `CGAL::PR_star_octree::Relations`) the
+  ///     leaves will build, for the automatic `k_v`: the larger their working set, the smaller the leaves}
+  ///     \cgalParamType{`unsigned`}
+  ///     \cgalParamDefault{`CGAL::PR_star_octree::default_bucket_size_relations` (links and triangles)}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{maximum_depth}
   ///     \cgalParamDescription{the depth bound that stops splitting (duplicate or extremely close points)}
@@ -257,6 +270,10 @@ public:
   /// \name The octree
   /// @{
   std::size_t bucket_size() const { return bucket_size_; }
+  /// whether `k_v` was chosen by the octree (`bucket_size` was `automatic_bucket_size`)
+  bool has_automatic_bucket_size() const { return automatic_; }
+  /// the choice of `k_v` and what it was made from (meaningful when `has_automatic_bucket_size()`)
+  const PR_star_octree::Bucket_size_choice& bucket_size_choice() const { return choice_; }
   std::size_t max_depth() const { return max_depth_; }
   /// the depth of the deepest leaf (0 for a single leaf)
   std::size_t depth() const { return depth_; }
@@ -435,6 +452,8 @@ private:
     using parameters::get_parameter;
     namespace np_tags = PR_star_octree::internal_np;
     bucket_size_ = choose_parameter(get_parameter(np, np_tags::bucket_size), default_bucket_size);
+    bucket_relations_ = choose_parameter(get_parameter(np, np_tags::bucket_size_relations),
+                                         PR_star_octree::default_bucket_size_relations);
     max_depth_ = choose_parameter(get_parameter(np, np_tags::maximum_depth), default_max_depth);
     keep_vertex_permutation_ = choose_parameter(get_parameter(np, np_tags::vertex_permutation), true);
     keep_tetrahedron_permutation_ =
@@ -470,6 +489,9 @@ private:
   bool keep_vertex_permutation_ = true;
   bool keep_tetrahedron_permutation_ = true;
   bool compact_ = false;
+  bool automatic_ = false;
+  unsigned bucket_relations_ = PR_star_octree::default_bucket_size_relations;
+  PR_star_octree::Bucket_size_choice choice_;
   std::size_t depth_ = 0;
   std::size_t depth_limited_leaves_ = 0;
   std::size_t coincident_leaves_ = 0;

@@ -479,6 +479,70 @@ void test_compact_tetrahedra() {
   }
 }
 
+// The automatic bucket threshold: the cost model's rule against values worked out by hand, its
+// bounds, and the octree's default, which must give the same octree as that k_v given explicitly.
+void test_automatic_bucket_size() {
+  namespace P = CGAL::PR_star_octree;
+  const std::size_t MiB = std::size_t(1) << 20;
+  // |T|/|V| = 5.5; links and triangles: 109 + 240 = 349 bytes per listed tetrahedron, a full leaf
+  // 1.5 * 5.5 * 349 = 2879.25 bytes per vertex of k_v; 8 MiB / 2879.25 = 2913.5: k_v = 2048.
+  P::Bucket_size_choice c = P::choose_bucket_size(2000000, 11000000, P::VERTEX_LINKS | P::TRIANGLES, MiB);
+  CHECK_EQUAL(c.bucket_size, std::size_t(2048));
+  CHECK_NEAR(c.leaf_bytes_per_tetrahedron, 349., 1e-9);
+  CHECK_NEAR(c.tetrahedra_per_vertex, 5.5, 1e-12);
+  CHECK_NEAR(c.estimated_leaf_bytes, 2048 * 1.5 * 5.5 * 349, 1e-6);
+  CHECK(!c.limited_by_mesh_size);
+  CHECK_EQUAL(c.cache_bytes, MiB);
+  // VT alone (47 bytes): 8 MiB / 387.75 = 21,634, capped at 4096
+  CHECK_EQUAL(P::choose_bucket_size(2000000, 11000000, P::VERTEX_TETRAHEDRA, MiB).bucket_size,
+              std::size_t(4096));
+  // everything (993 bytes): 8 MiB / 8192.25 = 1023.97: 512
+  CHECK_EQUAL(P::choose_bucket_size(2000000, 11000000, P::ALL_RELATIONS, MiB).bucket_size, std::size_t(512));
+  // a larger cache, larger leaves; a tiny one, the floor of 64
+  CHECK_EQUAL(P::choose_bucket_size(2000000, 11000000, P::VERTEX_LINKS | P::TRIANGLES, 2 * MiB).bucket_size,
+              std::size_t(4096));
+  CHECK_EQUAL(P::choose_bucket_size(2000000, 11000000, P::VERTEX_LINKS | P::TRIANGLES, 1024).bucket_size,
+              std::size_t(64));
+  // no relation named: the default (links and triangles); UNCHECKED_LINKS is no relation
+  CHECK_EQUAL(P::choose_bucket_size(2000000, 11000000, 0, MiB).bucket_size, std::size_t(2048));
+  CHECK_EQUAL(
+      P::choose_bucket_size(2000000, 11000000, P::VERTEX_LINKS | P::TRIANGLES | P::UNCHECKED_LINKS, MiB)
+          .bucket_size,
+      std::size_t(2048));
+  // a small mesh keeps 16 leaves' worth of vertices: |V| / 16 = 250 -> 128
+  c = P::choose_bucket_size(4000, 22000, P::VERTEX_LINKS | P::TRIANGLES, MiB);
+  CHECK_EQUAL(c.bucket_size, std::size_t(128));
+  CHECK(c.limited_by_mesh_size);
+  CHECK_EQUAL(P::choose_bucket_size(0, 0).bucket_size, std::size_t(64)); // an empty mesh: the floor
+  CHECK(P::cache_bytes_per_core() > 0);
+
+  // The octree's default is automatic, with the relations it is told of, and builds the same
+  // octree as the chosen k_v given explicitly.
+  using Tree = CGAL::PR_star_octree_3<>;
+  const Mesh mesh = shuffled_lattice(20, 4);
+  const auto in = CGAL::PR_star_octree::make_input(mesh);
+  const Tree automatic(in);
+  const P::Bucket_size_choice expected = P::choose_bucket_size(mesh.points.size(), mesh.tetrahedra.size());
+  CHECK(automatic.has_automatic_bucket_size());
+  CHECK_EQUAL(automatic.bucket_size(), expected.bucket_size);
+  CHECK_EQUAL(automatic.bucket_size_choice().estimated_leaf_bytes, expected.estimated_leaf_bytes);
+  const Tree given(in, P::parameters::bucket_size(expected.bucket_size));
+  CHECK(!given.has_automatic_bucket_size());
+  CHECK_EQUAL(automatic.number_of_leaves(), given.number_of_leaves());
+  CHECK(std::equal(automatic.tetrahedra().begin(), automatic.tetrahedra().end(), given.tetrahedra().begin(),
+                   given.tetrahedra().end()));
+  const auto s = automatic.statistics();
+  CHECK(s.automatic_bucket_size && !given.statistics().automatic_bucket_size);
+  CHECK_EQUAL(s.bucket_size, expected.bucket_size);
+  const Tree vt(
+      in,
+      P::parameters::bucket_size(Tree::automatic_bucket_size).bucket_size_relations(P::VERTEX_TETRAHEDRA));
+  CHECK_EQUAL(
+      vt.bucket_size(),
+      P::choose_bucket_size(mesh.points.size(), mesh.tetrahedra.size(), P::VERTEX_TETRAHEDRA).bucket_size);
+  CHECK_EQUAL(vt.bucket_size_choice().relations, unsigned(P::VERTEX_TETRAHEDRA));
+}
+
 // A hand-checked mesh: the unit cube split into 6 tetrahedra around the diagonal (0,0,0)-(1,1,1),
 // plus one tetrahedron listed with negative orientation and one unreferenced vertex.
 void test_hand_checked() {
@@ -672,6 +736,7 @@ int main(int argc, char** argv) {
   test_radix_sort_in_place();
   test_compact_leaf_lists();
   test_compact_tetrahedra();
+  test_automatic_bucket_size();
 
   // Generated meshes (CGAL Mesh_3 and TetGen, made by the test fixture).
   for (const char* name :

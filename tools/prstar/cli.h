@@ -6,6 +6,8 @@
 #ifndef PRSTAR_CLI_H
 #define PRSTAR_CLI_H
 
+#include <CGAL/PR_star_octree/bucket_size.h>
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -171,9 +173,10 @@ private:
   std::vector<std::string> positional_;
 };
 
-/// Parses a bucket threshold: a positive integer or `inf`.
+/// Parses a bucket threshold: a positive integer, `inf` or `auto` (the octree chooses).
 inline std::size_t parse_bucket_size(const std::string& s) {
   if (s == "inf" || s == "infinity" || s == "Inf") return (std::numeric_limits<std::size_t>::max)();
+  if (s == "auto") return CGAL::PR_star_octree::automatic_bucket_size;
   std::size_t used = 0;
   unsigned long long v = 0;
   try {
@@ -182,11 +185,12 @@ inline std::size_t parse_bucket_size(const std::string& s) {
     used = 0;
   }
   if (used == 0 || used != s.size() || v == 0)
-    throw Usage_error("--kv: '" + s + "' is not a positive integer or 'inf'");
+    throw Usage_error("--kv: '" + s + "' is not a positive integer, 'inf' or 'auto'");
   return static_cast<std::size_t>(v);
 }
 
 inline std::string bucket_size_string(std::size_t kv) {
+  if (kv == CGAL::PR_star_octree::automatic_bucket_size) return "auto";
   return kv == (std::numeric_limits<std::size_t>::max)() ? "inf" : std::to_string(kv);
 }
 

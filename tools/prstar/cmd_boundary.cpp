@@ -26,12 +26,11 @@ namespace prstar {
 void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
                      const CGAL::PR_star_octree::Boundary_counts& b, double seconds, long long interfaces) {
   const std::string& input = o.input();
-  const std::size_t kv = o.kv();
   const std::string out = o.output(), surface = o.output("--surface");
   if (o.json()) {
     Json j;
     j.begin_object().field("vertices", nv).field("tetrahedra", nt).key("kv");
-    json_kv(j, kv)
+    json_kv(j, o)
         .field("boundary_vertices", b.boundary_vertices)
         .field("interior_vertices", b.interior_vertices)
         .field("nonmanifold_vertices", b.nonmanifold_vertices)
@@ -57,8 +56,7 @@ void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
   if (interfaces >= 0) t.add({"triangles between two labels", std::to_string(interfaces)});
   t.add({"tetrahedra touching the boundary", std::to_string(b.boundary_tetrahedra)});
   t.add({"  with a boundary face", std::to_string(b.boundary_face_tetrahedra)});
-  std::cout << input << " (k_v = " << bucket_size_string(kv) << ", " << fixed(seconds, 3) << " s)\n"
-            << t.str();
+  std::cout << input << " (k_v = " << o.kv_label() << ", " << fixed(seconds, 3) << " s)\n" << t.str();
   if (b.nonmanifold_vertices)
     std::cout << "warning: " << b.nonmanifold_vertices
               << " vertices have a link that is neither a sphere nor a disc (non-manifold)\n";
@@ -161,6 +159,7 @@ int run_boundary(const Options& o) {
   const auto np = params::bucket_size(kv).maximum_depth(o.max_depth()).compact_tetrahedra(o.compact());
   const Octree tree(std::move(mesh), np.vertex_permutation(writes).tetrahedron_permutation(
                                          !out.empty() && !arrays.cell_data.empty()));
+  o.set_used_kv(tree);
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("classifying the vertices");
   // the output's array, in the user's numbering (3: in no tetrahedron), written directly
@@ -216,7 +215,7 @@ Section 7: 2|e| != 3|t| in the vertex link, plus a check that the link is a sphe
               "the point arrays vertex (index in MESH), boundary_type (1 boundary, 2 on an\n"
               "interface, 3 non-manifold) and MESH's point data, and the label names",
               false, "--surface")
-      .json_keys("keys: vertices, tetrahedra, kv, boundary_vertices, interior_vertices,\n"
+      .json_keys("keys: vertices, tetrahedra, kv, kv_automatic, boundary_vertices, interior_vertices,\n"
                  "nonmanifold_vertices, unreferenced_vertices, boundary_triangles, boundary_tetrahedra\n"
                  "(tetrahedra with a boundary or non-manifold vertex), boundary_face_tetrahedra (with a\n"
                  "face on the boundary), interface_triangles (with --surface), seconds, output, surface")

@@ -40,7 +40,6 @@ void table_cells(std::vector<std::string>& row, const Value_summary& s) {
 void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const std::string& field_name,
                       const Curvature_summary& summary, double seconds) {
   const std::string& input = o.input();
-  const std::size_t kv = o.kv();
   const std::string out = o.output(), csv = o.output("--csv");
   Value_summary distortion = summary.distortion[0], domain = summary.domain[0];
   distortion.add(summary.distortion[1]);
@@ -48,7 +47,7 @@ void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const st
   if (o.json()) {
     Json j;
     j.begin_object().field("vertices", nv).field("tetrahedra", nt).key("kv");
-    json_kv(j, kv)
+    json_kv(j, o)
         .field("field", field_name)
         .field("interior_vertices", summary.counts[0])
         .field("boundary_vertices", summary.counts[1])
@@ -71,7 +70,7 @@ void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const st
     return;
   }
   std::cout << input << ": distortion of '" << field_name
-            << "' and curvature of the domain (k_v = " << bucket_size_string(kv) << ", " << fixed(seconds, 3)
+            << "' and curvature of the domain (k_v = " << o.kv_label() << ", " << fixed(seconds, 3)
             << " s)\n";
   Table t({"vertices", "count", "distortion min", "max", "mean", "domain curvature min", "max", "mean"});
   auto row = [&](const std::string& name, std::uint64_t count, const Value_summary& d,
@@ -171,9 +170,15 @@ int run_curvature(const Options& o) {
 
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
-  const auto np = params::bucket_size(kv).maximum_depth(o.max_depth()).compact_tetrahedra(o.compact());
+  // (the curvature builds the links and the leaf's tetrahedra in local ids)
+  const auto np =
+      params::bucket_size(kv)
+          .bucket_size_relations(CGAL::PR_star_octree::VERTEX_LINKS | CGAL::PR_star_octree::LOCAL_TETRAHEDRA)
+          .maximum_depth(o.max_depth())
+          .compact_tetrahedra(o.compact());
   const Octree tree(std::move(mesh), np.vertex_permutation(!lean).tetrahedron_permutation(
                                          !out.empty() && !arrays.cell_data.empty()));
+  o.set_used_kv(tree);
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("computing the distortion");
   Curvature_arrays curv(nv); // the user's numbering
@@ -248,11 +253,12 @@ Non-manifold vertices get NaN.)")
               "vertex,x,y,z,boundary,distortion,domain_curvature (boundary: 0 interior,\n"
               "1 boundary, 2 non-manifold, 3 in no tetrahedron; nan where undefined)",
               false, "--csv")
-      .json_keys("keys: vertices, tetrahedra, kv, field, interior_vertices, boundary_vertices,\n"
-                 "nonmanifold_vertices, unreferenced_vertices, distortion_min/max/mean and\n"
-                 "domain_curvature_min/max/mean (over manifold vertices, when there are some),\n"
-                 "interior and boundary (objects: vertices and the same six keys), seconds,\n"
-                 "output, csv")
+      .json_keys(
+          "keys: vertices, tetrahedra, kv, kv_automatic, field, interior_vertices, boundary_vertices,\n"
+          "nonmanifold_vertices, unreferenced_vertices, distortion_min/max/mean and\n"
+          "domain_curvature_min/max/mean (over manifold vertices, when there are some),\n"
+          "interior and boundary (objects: vertices and the same six keys), seconds,\n"
+          "output, csv")
       .run(run_curvature);
 }
 

@@ -30,6 +30,16 @@ void statistics_json(prstar::Json& j, const CGAL::PR_star_octree::Statistics& s,
     j.field("kv", "inf");
   else
     j.field("kv", s.bucket_size);
+  j.field("kv_automatic", s.automatic_bucket_size);
+  if (s.automatic_bucket_size) { // what the octree chose k_v from (CGAL::PR_star_octree::choose_bucket_size)
+    const auto& c = s.bucket_size_choice;
+    j.key("kv_choice").begin_object();
+    j.field("cache_bytes", c.cache_bytes).field("tetrahedra_per_vertex", c.tetrahedra_per_vertex);
+    j.field("leaf_bytes_per_tetrahedron", c.leaf_bytes_per_tetrahedron);
+    j.field("estimated_leaf_bytes", c.estimated_leaf_bytes)
+        .field("limited_by_mesh_size", c.limited_by_mesh_size);
+    j.end_object();
+  }
   j.field("nodes", s.nodes).field("leaves", s.leaves).field("empty_leaves", s.empty_leaves);
   j.field("depth", s.depth).field("max_depth", s.max_depth).field("chi", s.chi);
   j.field("max_leaf_vertices", s.max_leaf_vertices).field("max_leaf_tetrahedra", s.max_leaf_tetrahedra);
@@ -188,17 +198,32 @@ void report_statistics(Mesh mesh, const std::string& name, const std::vector<std
            "total bytes", "bytes/tet", "build s"});
   for (std::size_t i = 0; i < stats.size(); ++i) {
     const auto& s = stats[i];
-    t.add({bucket_size_string(kvs[i]), std::to_string(s.nodes), std::to_string(s.leaves),
-           std::to_string(s.depth), fixed(s.chi, 3), fixed(s.prstar_overhead_per_vertex, 2),
-           fixed(s.prstar_total_per_vertex, 2), human_bytes(double(s.bytes.index())),
-           human_bytes(double(s.bytes.total())), fixed(s.bytes_per_tetrahedron(), 1), fixed(seconds[i], 3)});
+    t.add({bucket_size_string(s.infinite_bucket_size ? kvs[i] : s.bucket_size) +
+               (s.automatic_bucket_size ? " (auto)" : ""),
+           std::to_string(s.nodes), std::to_string(s.leaves), std::to_string(s.depth), fixed(s.chi, 3),
+           fixed(s.prstar_overhead_per_vertex, 2), fixed(s.prstar_total_per_vertex, 2),
+           human_bytes(double(s.bytes.index())), human_bytes(double(s.bytes.total())),
+           fixed(s.bytes_per_tetrahedron(), 1), fixed(seconds[i], 3)});
   }
   std::cout << t.str();
   for (std::size_t i = 0; i < stats.size(); ++i) {
     const auto& s = stats[i];
+    if (s.automatic_bucket_size) {
+      const auto& c = s.bucket_size_choice;
+      std::cout << "k_v = " << s.bucket_size
+                << " chosen by the octree (--kv auto): a full leaf's links and triangles\n"
+                << "  need about " << human_bytes(c.estimated_leaf_bytes) << " ("
+                << fixed(c.leaf_bytes_per_tetrahedron, 0)
+                << " bytes per listed tetrahedron), at most 8 x the " << human_bytes(double(c.cache_bytes))
+                << " cache of a core"
+                << (c.limited_by_mesh_size ? ";\n  lowered to keep 16 leaves' worth of vertices (|V| / 16)"
+                                           : "")
+                << "\n";
+    }
     if (s.depth_limited_leaves || s.coincident_leaves)
-      std::cout << "note (k_v = " << bucket_size_string(kvs[i]) << "): " << s.depth_limited_leaves
-                << " leaves stopped at the depth bound " << s.max_depth << ", " << s.coincident_leaves
+      std::cout << "note (k_v = " << bucket_size_string(s.infinite_bucket_size ? kvs[i] : s.bucket_size)
+                << "): " << s.depth_limited_leaves << " leaves stopped at the depth bound " << s.max_depth
+                << ", " << s.coincident_leaves
                 << " leaves of coincident points hold more than k_v vertices (largest leaf: "
                 << s.max_leaf_vertices << " vertices)\n";
   }

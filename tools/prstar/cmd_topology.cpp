@@ -73,11 +73,15 @@ Octree build_octree(const Options& o, Mesh&& mesh, Mesh_arrays& arrays, bool wri
     mesh.cell_data.clear();
   }
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(o.kv()) + ")");
-  return Octree(std::move(mesh), params::bucket_size(o.kv())
-                                     .maximum_depth(o.max_depth())
-                                     .compact_tetrahedra(o.compact())
-                                     .vertex_permutation(true)
-                                     .tetrahedron_permutation(write));
+  // (the lower stars are read from VT)
+  Octree tree(std::move(mesh), params::bucket_size(o.kv())
+                                   .bucket_size_relations(CGAL::PR_star_octree::VERTEX_TETRAHEDRA)
+                                   .maximum_depth(o.max_depth())
+                                   .compact_tetrahedra(o.compact())
+                                   .vertex_permutation(true)
+                                   .tetrahedron_permutation(write));
+  o.set_used_kv(tree);
+  return tree;
 }
 
 std::string type_name(PSO::Critical_type t) {
@@ -196,7 +200,7 @@ int run_critical(const Options& o) {
   if (o.json()) {
     Json j;
     j.begin_object().field("vertices", nv).field("tetrahedra", nt).key("kv");
-    json_kv(j, o.kv()).field("field", field.name).field("field_min", field.min).field("field_max", field.max);
+    json_kv(j, o).field("field", field.name).field("field_min", field.min).field("field_max", field.max);
     for (int k = 0; k < 6; ++k) j.field(keys[k], all[k]);
     j.field("unreferenced", counts.unreferenced)
         .field("join_multiplicity", counts.join_multiplicity)
@@ -240,13 +244,11 @@ int run_critical(const Options& o) {
     Table tg({"", "count"});
     table_gradient(tg, g, chi);
     std::cout << input << ": critical points of '" << field.name << "' (" << short_number(field.min) << " .. "
-              << short_number(field.max) << "), k_v = " << bucket_size_string(o.kv()) << ", "
-              << fixed(seconds, 3) << " s\n"
+              << short_number(field.max) << "), k_v = " << o.kv_label() << ", " << fixed(seconds, 3) << " s\n"
               << t.str() << tg.str();
   } else {
     std::cout << input << ": critical points of '" << field.name << "' (" << short_number(field.min) << " .. "
-              << short_number(field.max) << "), k_v = " << bucket_size_string(o.kv()) << ", "
-              << fixed(seconds, 3) << " s\n"
+              << short_number(field.max) << "), k_v = " << o.kv_label() << ", " << fixed(seconds, 3) << " s\n"
               << t.str();
   }
   if (!out.empty()) std::cout << "wrote " << out << '\n';
@@ -380,7 +382,7 @@ int run_morse(const Options& o) {
   if (o.json()) {
     Json j;
     j.begin_object().field("vertices", nv).field("tetrahedra", nt).key("kv");
-    json_kv(j, o.kv())
+    json_kv(j, o)
         .field("field", field.name)
         .field("field_min", field.min)
         .field("field_max", field.max)
@@ -440,8 +442,7 @@ int run_morse(const Options& o) {
   if (!arcs_file.empty()) t.add({"arcs", std::to_string(arcs.size())});
   std::cout << input << ": Morse complexes of '" << field.name << "' (" << short_number(field.min) << " .. "
             << short_number(field.max) << "), persistence threshold " << number(relative * 100) << "% ("
-            << short_number(threshold) << "), k_v = " << bucket_size_string(o.kv()) << ", "
-            << fixed(seconds, 3) << " s\n"
+            << short_number(threshold) << "), k_v = " << o.kv_label() << ", " << fixed(seconds, 3) << " s\n"
             << t.str();
   if (!out.empty()) std::cout << "wrote " << out << '\n';
   if (!arcs_file.empty()) std::cout << "wrote " << arcs_file << '\n';
@@ -476,13 +477,14 @@ the vertices inside the mesh apart.  The type codes are TTK's: 0 minimum, 1 1-sa
               "write one row per vertex that is not regular, by vertex index:\n"
               "vertex,x,y,z,value,type,type_name,lower_components,upper_components,boundary",
               false, "--csv")
-      .json_keys("keys: vertices, tetrahedra, kv, field, field_min, field_max, minima, saddles_1,\n"
-                 "saddles_2, maxima, degenerate, regular, unreferenced, join_multiplicity,\n"
-                 "split_multiplicity, interior (the same five counts inside the mesh), critical_points\n"
-                 "(objects: vertex, type, lower_components, upper_components, boundary, value, point),\n"
-                 "gradient (with --gradient: critical_vertices, critical_edges, critical_triangles,\n"
-                 "critical_tetrahedra, alternating_sum, euler_characteristic, bytes_per_tetrahedron),\n"
-                 "seconds, output, csv")
+      .json_keys(
+          "keys: vertices, tetrahedra, kv, kv_automatic, field, field_min, field_max, minima, saddles_1,\n"
+          "saddles_2, maxima, degenerate, regular, unreferenced, join_multiplicity,\n"
+          "split_multiplicity, interior (the same five counts inside the mesh), critical_points\n"
+          "(objects: vertex, type, lower_components, upper_components, boundary, value, point),\n"
+          "gradient (with --gradient: critical_vertices, critical_edges, critical_triangles,\n"
+          "critical_tetrahedra, alternating_sum, euler_characteristic, bytes_per_tetrahedron),\n"
+          "seconds, output, csv")
       .run(run_critical);
 }
 
@@ -514,7 +516,7 @@ their cells join the cells they merge into.)")
               "write the persistence pairs: type,extremum,saddle,extremum_value,saddle_value,\n"
               "birth,death,persistence (essential pairs: no saddle, inf)",
               false, "--csv")
-      .json_keys("keys: vertices, tetrahedra, kv, field, field_min, field_max, persistence,\n"
+      .json_keys("keys: vertices, tetrahedra, kv, kv_automatic, field, field_min, field_max, persistence,\n"
                  "threshold, critical_points (minima, saddles_1, saddles_2, maxima, degenerate,\n"
                  "regular), gradient (as in critical --gradient), ascending_cells, descending_cells,\n"
                  "outflow_tetrahedra, minimum_saddle_pairs, saddle_maximum_pairs and their _kept\n"

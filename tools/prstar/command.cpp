@@ -37,9 +37,10 @@ namespace {
 using Octree = CGAL::PR_star_octree_3<>;
 
 // The help texts of the common options: the only place they are written.
-const char* const help_kv = "bucket threshold k_v of the octree: a positive integer, or inf (one leaf)";
-const char* const help_kv_list = "bucket thresholds k_v of the octree: positive integers or inf (one leaf),\n"
-                                 "comma-separated, one row each";
+const char* const help_kv = "bucket threshold k_v of the octree: a positive integer, inf (one leaf), or\n"
+                            "auto (chosen from the mesh, the work and the cache; `prstar stats` shows why)";
+const char* const help_kv_list = "bucket thresholds k_v of the octree: positive integers, inf (one leaf) or\n"
+                                 "auto (chosen from the mesh), comma-separated, one row each";
 const std::string help_compact =
     "store the octree's tetrahedra compactly: about 5 bytes each instead of 16, the same results;\n"
     "each leaf decodes its tetrahedra once (see `prstar stats` for the bytes per tetrahedron)";
@@ -247,7 +248,7 @@ std::string Command::usage_line() const {
   else
     for (const Declared& d : specific_)
       u += " [" + d.name + (d.value_name.empty() ? "" : " " + d.value_name) + "]";
-  if (has_kv_) u += kv_list_ ? " [--kv N|inf[,N...]]" : " [--kv N|inf]";
+  if (has_kv_) u += kv_list_ ? " [--kv N|inf|auto[,N...]]" : " [--kv N|inf|auto]";
   if (has_max_depth_) u += " [--max-depth D] [--compact]";
   if (!input_.empty()) u += " [--threads N] [--max-memory SIZE]";
   for (const Output_decl& o : outputs_) {
@@ -264,7 +265,7 @@ std::string Command::help() const {
   for (const Declared& d : specific_)
     lines.push_back({d.name + (d.value_name.empty() ? "" : " " + d.value_name), d.help});
   if (has_kv_)
-    lines.push_back({kv_list_ ? "--kv N|inf[,N...]" : "--kv N|inf",
+    lines.push_back({kv_list_ ? "--kv N|inf|auto[,N...]" : "--kv N|inf|auto",
                      (kv_list_ ? help_kv_list : help_kv) + std::string("\n(default ") + kv_default_ + ")"});
   if (has_max_depth_) {
     lines.push_back({"--max-depth D", help_max_depth});
@@ -485,7 +486,16 @@ std::vector<std::size_t> parse_bucket_list(const std::string& s) {
 
 Json& json_kv(Json& j, std::size_t kv) {
   if (kv == Octree::infinite_bucket_size) return j.value("inf");
+  if (kv == Octree::automatic_bucket_size) return j.value("auto");
   return j.value(kv);
+}
+
+Json& json_kv(Json& j, const Options& o) {
+  return json_kv(j, o.used_kv()).field("kv_automatic", o.used_kv_automatic());
+}
+
+std::string Options::kv_label() const {
+  return bucket_size_string(used_kv()) + (used_kv_automatic_ ? " (auto)" : "");
 }
 
 Command& Command::run_distributed(Run f) {

@@ -135,6 +135,20 @@ public:
   std::size_t kv() const { return kvs_.front(); }
   const std::vector<std::size_t>& kvs() const { return kvs_; }
   std::size_t max_depth() const { return max_depth_; }
+  /// The k_v the octree used, told by the command once the octree is built (`--kv auto`, the
+  /// default, lets the octree choose): `kv_label()` and `json_kv()` report it.
+  void set_used_kv(std::size_t kv, bool automatic) const {
+    used_kv_ = kv;
+    used_kv_automatic_ = automatic;
+  }
+  template <class Octree>
+  void set_used_kv(const Octree& tree) const {
+    set_used_kv(tree.bucket_size(), tree.has_automatic_bucket_size());
+  }
+  /// The k_v used, for people: "2048 (auto)", "50", "inf", or "auto" before the octree is built.
+  std::string kv_label() const;
+  std::size_t used_kv() const { return used_kv_ ? used_kv_ : kv(); }
+  bool used_kv_automatic() const { return used_kv_automatic_; }
   /// --compact: the octree stores its tetrahedra compactly (named parameter `compact_tetrahedra`)
   bool compact() const { return compact_; }
   /// An output file, empty when not given: `output()` is -o/--output, `output("--csv")` another.
@@ -174,6 +188,8 @@ private:
   std::size_t max_depth_ = 0, threads_ = 0, max_memory_ = 0;
   std::vector<std::pair<std::string, std::string>> outputs_;
   bool force_ = false, json_ = false, quiet_ = false, quiet_silences_summary_ = false, compact_ = false;
+  mutable std::size_t used_kv_ = 0;
+  mutable bool used_kv_automatic_ = false;
 };
 
 /// The point-data array of `point_data` named `name` (the first one when `name` is empty), as a
@@ -186,10 +202,12 @@ std::size_t find_point_field(const std::vector<CGAL::PR_star_octree::Point_data_
 std::string mesh_formats();
 /// Parses a size in bytes: "1500000000", "800M", "64G", "2T" (powers of 1024), or "unlimited".
 std::size_t parse_memory_size(const std::string& s);
-/// Parses "N|inf[,N|inf...]".
+/// Parses "N|inf|auto[,N|inf|auto...]".
 std::vector<std::size_t> parse_bucket_list(const std::string& s);
-/// k_v as a JSON value: a number, or the string "inf".
+/// k_v as a JSON value: a number, or the string "inf" (or "auto" before the octree chose).
 Json& json_kv(Json& j, std::size_t kv);
+/// The k_v the octree used as a JSON value, followed by the field `kv_automatic` (whether it chose).
+Json& json_kv(Json& j, const Options& o);
 
 /// Reads the mesh file `file` (any format the library reads), with a progress line.
 Mesh read_mesh(const std::string& file, Progress_bar& progress);

@@ -11,6 +11,7 @@
 /// leaf's vertex range and tetrahedron list only, and the streaming visitor over all leaves.
 
 #include <CGAL/PR_star_octree.h>
+#include <CGAL/PR_star_octree/Relations.h>
 #include <CGAL/PR_star_octree/internal/local_complex.h>
 #include <CGAL/PR_star_octree/parameters.h>
 #include <CGAL/Iterator_range.h>
@@ -26,27 +27,6 @@
 
 namespace CGAL {
 namespace PR_star_octree {
-
-/// \ingroup PkgPRStarOctreeRef
-/// The local relations a `Leaf_topology` can build; combine with `|`.
-enum Relations : unsigned {
-  VERTEX_TETRAHEDRA = 1u,     ///< VT (Algorithm 1): the tetrahedra incident in each vertex of the leaf
-  TETRAHEDRON_ADJACENCY = 2u, ///< TT (Algorithm 2): the tetrahedra across the faces of the leaf's tetrahedra
-  VERTEX_VERTICES = 4u,       ///< VV: the vertices adjacent to each vertex of the leaf
-  EDGES = 8u,                 ///< the edges with a vertex in the leaf, their stars in cyclic order, VE
-  TRIANGLES = 16u,            ///< the triangles with a vertex in the leaf and their incident tetrahedra
-  /// the kind of the link of every vertex of the leaf (`Vertex_type`: empty, sphere, disc, neither),
-  /// gathered for the whole leaf in one pass over its tetrahedra (`Leaf_topology::vertex_type()`)
-  VERTEX_LINKS = 32u,
-  /// the leaf's tetrahedra in dense local vertex ids (`Leaf_topology::local_tetrahedron()`): the
-  /// leaf's own vertices first, then the other vertices of its tetrahedra
-  LOCAL_TETRAHEDRA = 64u,
-  ALL_RELATIONS = 127u,
-  /// not a relation but a modifier of `VERTEX_LINKS`: only the paper's Euler count on each link
-  /// (`2|e| = 3|t|`), without checking that it is a sphere or a disc (faster, trusts the mesh to be
-  /// manifold; a link edge in three or more link triangles is still reported `NONMANIFOLD`)
-  UNCHECKED_LINKS = 128u
-};
 
 /// \ingroup PkgPRStarOctreeRef
 /// What the link of a vertex is.

@@ -6,6 +6,8 @@
 #ifndef CGAL_PR_STAR_OCTREE_STATISTICS_H
 #define CGAL_PR_STAR_OCTREE_STATISTICS_H
 
+#include <CGAL/PR_star_octree/bucket_size.h>
+
 #include <cstddef>
 #include <map>
 
@@ -40,11 +42,13 @@ struct Memory_bytes {
 struct Statistics {
   std::size_t vertices = 0;
   std::size_t tetrahedra = 0;
-  std::size_t bucket_size = 0;       ///< k_v
-  bool infinite_bucket_size = false; ///< k_v = infinity (a single leaf)
-  std::size_t max_depth = 0;         ///< the depth bound
-  std::size_t nodes = 0;             ///< |N|
-  std::size_t leaves = 0;            ///< |N_leaf|
+  std::size_t bucket_size = 0;           ///< k_v
+  bool infinite_bucket_size = false;     ///< k_v = infinity (a single leaf)
+  bool automatic_bucket_size = false;    ///< k_v was chosen by the octree (see `bucket_size_choice`)
+  Bucket_size_choice bucket_size_choice; ///< what the automatic k_v was chosen from
+  std::size_t max_depth = 0;             ///< the depth bound
+  std::size_t nodes = 0;                 ///< |N|
+  std::size_t leaves = 0;                ///< |N_leaf|
   std::size_t empty_leaves = 0;
   std::size_t depth = 0;
   std::size_t max_leaf_vertices = 0;

@@ -19,6 +19,7 @@ namespace PR_star_octree {
 // The package's own named parameters, listed once: X(name) for each.
 #define CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(X)                                                            \
   X(bucket_size)                                                                                             \
+  X(bucket_size_relations)                                                                                   \
   X(maximum_depth)                                                                                           \
   X(check_links)                                                                                             \
   X(with_boundary_triangles)                                                                                 \
@@ -79,7 +80,8 @@ CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_TAG)
 // clang-format off
 /// | parameter | used by | default |
 /// |---|---|---|
-/// | `bucket_size(std::size_t)` | the `PR_star_octree_3` constructors, `simplify()`, `check_validity()` on arrays | 50 |
+/// | `bucket_size(std::size_t)` | the `PR_star_octree_3` constructors, `simplify()`, `check_validity()` on arrays | `automatic_bucket_size` (chosen by `choose_bucket_size()`) |
+/// | `bucket_size_relations(unsigned)` | the `PR_star_octree_3` constructors: the `Relations` the automatic k_v is sized for | `default_bucket_size_relations` |
 /// | `maximum_depth(std::size_t)` | the `PR_star_octree_3` constructors | 32 |
 /// | `geom_traits(gt)` (%CGAL's) | the `PR_star_octree_3` constructors, `simplify()` | `GeomTraits()` |
 /// | `vertex_permutation(bool)`, `tetrahedron_permutation(bool)` | the `PR_star_octree_3` constructors | `true` |

@@ -189,6 +189,11 @@ template <class GT, class I>
 template <class ConcurrencyTag>
 void PR_star_octree_3<GT, I>::build_in_place() {
   const std::size_t nv = points_.size(), nt = tetrahedra_.size();
+  if (bucket_size_ == automatic_bucket_size) {
+    choice_ = PR_star_octree::choose_bucket_size(nv, nt, bucket_relations_);
+    bucket_size_ = choice_.bucket_size;
+    automatic_ = true;
+  }
 
   // Repeated vertices in a tetrahedron (in the user's numbering, for the message).
   for (std::size_t t = 0; t < nt; ++t) {
@@ -266,35 +271,14 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
   std::vector<Index> buffer;
   std::vector<unsigned char> code;
 
-  while (!stack.empty()) {
-    const Item item = stack.back();
-    stack.pop_back();
-    const Index b = nodes_[item.node].vertex_begin, e = nodes_[item.node].vertex_end;
+  // Stable counting sort of order[b, e) by octant of the box [lo, hi) (bit a set when coordinate a
+  // >= midpoint): `start[c]` is where octant c begins, relative to b.
+  const auto sort_by_octant = [&](Index b, Index e, const std::array<double, 3>& lo,
+                                  const std::array<double, 3>& hi, std::array<std::size_t, 9>& start) {
     const std::size_t count = e - b;
-    bool split = count > bucket_size_;
-    if (split && item.depth >= max_depth_) {
-      split = false;
-      ++depth_limited_leaves_;
-    }
-    if (split) { // points that all coincide can never be separated: stop and report
-      const std::array<double, 3> p0 = coordinates(points_[order[b]]);
-      bool all_same = true;
-      for (Index i = b + 1; i < e && all_same; ++i) all_same = (coordinates(points_[order[i]]) == p0);
-      if (all_same) {
-        split = false;
-        ++coincident_leaves_;
-      }
-    }
-    if (!split) {
-      leaves_.push_back(item.node);
-      depth_ = (std::max)(depth_, item.depth);
-      continue;
-    }
-
-    // Stable counting sort of [b, e) by octant: bit a set when coordinate a >= midpoint.
-    const std::array<double, 3> mid = center(item.lo, item.hi);
+    const std::array<double, 3> mid = center(lo, hi);
     code.resize(count);
-    std::array<std::size_t, 9> start{};
+    start.fill(0);
     for (std::size_t i = 0; i < count; ++i) {
       const unsigned c = octant(coordinates(points_[order[b + i]]), mid);
       code[i] = static_cast<unsigned char>(c);
@@ -305,8 +289,69 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
     std::array<std::size_t, 8> pos;
     std::copy(start.begin(), start.begin() + 8, pos.begin());
     for (std::size_t i = 0; i < count; ++i) buffer[pos[code[i]]++] = order[b + i];
-    std::copy(buffer.begin(), buffer.end(), order.begin() + b);
+    std::copy(buffer.begin(), buffer.begin() + count, order.begin() + b);
+  };
 
+  // The vertices of a leaf in the order a finer split would give them (depth first, octants 0 to
+  // 7, down to groups of `leaf_order_group` vertices or the depth bound), without making nodes:
+  // vertices close in space get close indices, which shortens the differences of the compact
+  // tetrahedra and keeps a leaf's relations close in memory.  Depends on the positions only, as the
+  // split does (ties, at the finest level, keep the input order).
+  constexpr std::size_t leaf_order_group = 8;
+  std::vector<Item> sub;
+  const auto order_leaf = [&](Index b, Index e, const Item& leaf) {
+    sub.assign(1, Item{0, leaf.lo, leaf.hi, leaf.depth});
+    std::vector<std::pair<Index, Index>> ranges{{b, e}};
+    while (!sub.empty()) {
+      const Item it = sub.back();
+      const std::pair<Index, Index> r = ranges.back();
+      sub.pop_back();
+      ranges.pop_back();
+      if (static_cast<std::size_t>(r.second - r.first) <= leaf_order_group || it.depth >= max_depth_)
+        continue;
+      std::array<std::size_t, 9> start;
+      sort_by_octant(r.first, r.second, it.lo, it.hi, start);
+      for (unsigned c = 8; c-- > 0;) {
+        if (start[c + 1] - start[c] <= leaf_order_group) continue;
+        Item child{0, it.lo, it.hi, it.depth + 1};
+        child_box(c, child.lo, child.hi);
+        sub.push_back(child);
+        ranges.emplace_back(static_cast<Index>(r.first + start[c]),
+                            static_cast<Index>(r.first + start[c + 1]));
+      }
+    }
+  };
+
+  while (!stack.empty()) {
+    const Item item = stack.back();
+    stack.pop_back();
+    const Index b = nodes_[item.node].vertex_begin, e = nodes_[item.node].vertex_end;
+    const std::size_t count = e - b;
+    bool split = count > bucket_size_;
+    if (split && item.depth >= max_depth_) {
+      split = false;
+      ++depth_limited_leaves_;
+    }
+    bool coincident = false;
+    if (split) { // points that all coincide can never be separated: stop and report
+      const std::array<double, 3> p0 = coordinates(points_[order[b]]);
+      bool all_same = true;
+      for (Index i = b + 1; i < e && all_same; ++i) all_same = (coordinates(points_[order[i]]) == p0);
+      if (all_same) {
+        split = false;
+        coincident = true;
+        ++coincident_leaves_;
+      }
+    }
+    if (!split) {
+      leaves_.push_back(item.node);
+      depth_ = (std::max)(depth_, item.depth);
+      if (!coincident) order_leaf(b, e, item);
+      continue;
+    }
+
+    std::array<std::size_t, 9> start;
+    sort_by_octant(b, e, item.lo, item.hi, start);
     const Node_index first = static_cast<Node_index>(nodes_.size());
     if (static_cast<std::size_t>(first) + 8 >= static_cast<std::size_t>(no_node))
       throw std::invalid_argument("PR_star_octree_3: too many octree nodes for the index type");
@@ -517,6 +562,8 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
   s.tetrahedra = number_of_tetrahedra();
   s.compact_tetrahedra = compact_;
   s.bucket_size = bucket_size_;
+  s.automatic_bucket_size = automatic_;
+  s.bucket_size_choice = choice_;
   s.infinite_bucket_size = (bucket_size_ == infinite_bucket_size);
   s.max_depth = max_depth_;
   s.nodes = nodes_.size();
