@@ -189,12 +189,7 @@ int main(int argc, char** argv) {
 
   for (const std::string& file : files) {
     Mesh mesh;
-    try {
-      P::IO::read_tetrahedral_mesh(file, mesh);
-    } catch (const std::exception& e) {
-      std::cerr << e.what() << '\n';
-      return 1;
-    }
+    if (!prstar_bench::read_mesh_file(file, mesh)) return 1;
     const std::string name = base_name(file);
     if (calibration) {
       if (&file == &files.front())
@@ -271,13 +266,6 @@ int main(int argc, char** argv) {
     }
     std::cout << std::endl;
   }
-  if (!csv_file.empty()) {
-    std::ofstream f(csv_file);
-    f << csv.str();
-    if (!f) {
-      std::cerr << csv_file << ": cannot write\n";
-      return 1;
-    }
-  }
+  if (!csv_file.empty() && !prstar_bench::write_text_file(csv_file, csv.str())) return 1;
   return 0;
 }

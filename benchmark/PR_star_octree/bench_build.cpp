@@ -105,13 +105,6 @@ int main(int argc, char** argv) {
           << ',' << s.bytes.index() << ',' << s.bytes.total() << ',' << best << ',' << peak_rss() << '\n';
     }
   }
-  if (!csv_file.empty()) {
-    std::ofstream f(csv_file);
-    f << csv.str();
-    if (!f) {
-      std::cerr << csv_file << ": cannot write\n";
-      return 1;
-    }
-  }
+  if (!csv_file.empty() && !prstar_bench::write_text_file(csv_file, csv.str())) return 1;
   return 0;
 }

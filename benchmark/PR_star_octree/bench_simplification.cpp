@@ -1065,12 +1065,7 @@ int main(int argc, char** argv) {
 
   for (const std::string& file : files) {
     Mesh mesh;
-    try {
-      P::IO::read_tetrahedral_mesh(file, mesh);
-    } catch (const std::exception& e) {
-      std::cerr << e.what() << '\n';
-      return 1;
-    }
+    if (!prstar_bench::read_mesh_file(file, mesh)) return 1;
     const std::string name = base_name(file);
     std::cerr << name << ": " << mesh.points.size() << " vertices, " << mesh.tetrahedra.size()
               << " tetrahedra\n";

@@ -7,6 +7,8 @@
 #ifndef PRSTAR_BENCH_UTIL_H
 #define PRSTAR_BENCH_UTIL_H
 
+#include <CGAL/PR_star_octree/IO.h>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -105,6 +107,29 @@ inline std::vector<std::size_t> parse_kv_list(const std::string& s) {
     start = comma + 1;
   }
   return r;
+}
+
+/// Writes `text` to `path`; false (with a message) when it cannot.
+inline bool write_text_file(const std::string& path, const std::string& text) {
+  std::ofstream f(path);
+  f << text;
+  if (!f) {
+    std::cerr << path << ": cannot write\n";
+    return false;
+  }
+  return true;
+}
+
+/// Reads a mesh file with the package's readers; false (with the reader's message) when it cannot.
+template <class Mesh>
+bool read_mesh_file(const std::string& file, Mesh& mesh) {
+  try {
+    CGAL::PR_star_octree::IO::read_tetrahedral_mesh(file, mesh);
+  } catch (const std::exception& e) {
+    std::cerr << e.what() << '\n';
+    return false;
+  }
+  return true;
 }
 
 inline std::string base_name(const std::string& p) {

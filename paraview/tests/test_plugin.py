@@ -458,8 +458,9 @@ def test_octree(a, src, vtu, name):
 
 def test_simplify(a, src, vtu, name):
     out = os.path.join(a.work, name + "_simplified.vtu")
+    # (the plugin's BucketSize defaults to 50; the tool's --kv to auto)
     j = prstar(["simplify", vtu, "--target", "0.6", "--min-dihedral", "4", "--feature-angle", "35",
-                "--max-error", "0.3%", "-o", out], a.prstar, True)
+                "--max-error", "0.3%", "--kv", "50", "-o", out], a.prstar, True)
     f = PRStarSimplify(Input=src, TargetReduction=0.6, MinimumDihedralAngle=4, FeatureAngle=35, MaximumError=0.3)
     d = output(f)
     ref = read_vtu(out)

@@ -83,7 +83,7 @@ def boundary(
     mesh: MeshLike,
     *,
     surface: bool = True,
-    bucket_size: Optional[Union[int, float]] = None,
+    bucket_size: Optional[Union[int, float, str]] = None,
     max_depth: Optional[int] = None,
     threads: Optional[int] = None,
     progress: Optional[ProgressCallback] = None,
@@ -95,7 +95,8 @@ def boundary(
     Args:
         mesh: a :class:`Mesh`, a ``(points, tetrahedra)`` pair, or an :class:`Octree`.
         surface: also return the surface triangles (``triangles``, ``label_inside``, ...).
-        bucket_size: the bucket threshold k_v (default 50; ``math.inf``: one leaf), when an octree
+        bucket_size: the bucket threshold k_v (default ``"auto"``: chosen from the mesh, as
+            ``--kv auto``; ``math.inf``: one leaf), when an octree
             is built.
         max_depth: the depth bound of the octree built.
         threads: the number of threads (default: all cores), when an octree is built.
@@ -136,7 +137,7 @@ def curvature(
     mesh: MeshLike,
     field: Any = None,
     *,
-    bucket_size: Optional[Union[int, float]] = None,
+    bucket_size: Optional[Union[int, float, str]] = None,
     max_depth: Optional[int] = None,
     threads: Optional[int] = None,
     progress: Optional[ProgressCallback] = None,
@@ -166,7 +167,7 @@ def distortion(
     mesh: MeshLike,
     field: Any = None,
     *,
-    bucket_size: Optional[Union[int, float]] = None,
+    bucket_size: Optional[Union[int, float, str]] = None,
     max_depth: Optional[int] = None,
     threads: Optional[int] = None,
     progress: Optional[ProgressCallback] = None,

@@ -82,6 +82,12 @@ def _check_no_build_arguments(function: str, bucket_size: Any, max_depth: Any, t
         )
 
 
+# CGAL::PR_star_octree::Relations of the functions whose leaves build more or less than the default
+# (links and triangles): VERTEX_LINKS | LOCAL_TETRAHEDRA for the curvature, VERTEX_TETRAHEDRA for the
+# lower stars of the scalar-field topology.
+_RELATIONS = {"curvature": 32 | 64, "critical_points": 1, "morse_complexes": 1}
+
+
 def _octree(
     mesh: MeshLike,
     function: str,
@@ -94,12 +100,15 @@ def _octree(
     if isinstance(mesh, Octree):
         _check_no_build_arguments(function, bucket_size, max_depth, threads)
         return mesh
-    kv = 50 if bucket_size is None else bucket_size
+    kv = "auto" if bucket_size is None else bucket_size
+    # the relations the function's leaves build, which the automatic k_v is sized for (as the tool's)
+    relations = _RELATIONS.get(function, 0)
     if isinstance(mesh, Mesh):
         return Octree(mesh.points, mesh.tetrahedra, bucket_size=kv, max_depth=max_depth, labels=mesh.labels,
-                      field=field, threads=threads)
+                      field=field, threads=threads, _relations=relations)
     if isinstance(mesh, (tuple, list)) and len(mesh) == 2:
-        return Octree(mesh[0], mesh[1], bucket_size=kv, max_depth=max_depth, field=field, threads=threads)
+        return Octree(mesh[0], mesh[1], bucket_size=kv, max_depth=max_depth, field=field, threads=threads,
+                      _relations=relations)
     raise TypeError(f"{function}: expected a prstar.Mesh, an Octree or a (points, tetrahedra) pair, "
                     f"not {type(mesh).__name__}")
 

@@ -26,11 +26,12 @@ class Octree:
         points: npt.ArrayLike,
         tetrahedra: npt.ArrayLike,
         *,
-        bucket_size: Union[int, float, None] = 50,
+        bucket_size: Union[int, float, str, None] = "auto",
         max_depth: Optional[int] = None,
         labels: Optional[npt.ArrayLike] = None,
         field: Optional[npt.ArrayLike] = None,
         threads: Optional[int] = None,
+        _relations: int = 0,
     ) -> None: ...
     @property
     def number_of_vertices(self) -> int: ...
@@ -38,7 +39,7 @@ class Octree:
     def number_of_tetrahedra(self) -> int: ...
     @property
     def bucket_size(self) -> Union[int, float]:
-        """k_v; ``math.inf`` for a single leaf."""
+        """k_v (the one chosen with ``bucket_size="auto"``, the default); ``math.inf`` for a single leaf."""
     @property
     def depth(self) -> int: ...
     @property

@@ -154,7 +154,7 @@ class ValidationReport:
 def validate(
     mesh: MeshLike,
     *,
-    bucket_size: Optional[Union[int, float]] = None,
+    bucket_size: Optional[Union[int, float, str]] = None,
     max_depth: Optional[int] = None,
     threads: Optional[int] = None,
     progress: Optional[ProgressCallback] = None,
@@ -166,7 +166,8 @@ def validate(
 
     Args:
         mesh: a :class:`Mesh`, a ``(points, tetrahedra)`` pair, or an :class:`Octree`.
-        bucket_size: the bucket threshold k_v of the octree built (default 50; ``math.inf``: one leaf);
+        bucket_size: the bucket threshold k_v of the octree built (default ``"auto"``: chosen from
+            the mesh, as ``--kv auto``; ``math.inf``: one leaf);
             the result does not depend on it.
         max_depth: the depth bound of the octree built.
         threads: the number of threads (default: all cores), when an octree is built.
@@ -394,7 +395,7 @@ def simplify(
     max_error: Optional[Union[float, str]] = "0.2%",
     priority: str = "length",
     placement: str = "half-edge",
-    bucket_size: Optional[Union[int, float]] = None,
+    bucket_size: Optional[Union[int, float, str]] = None,
     threads: Optional[int] = None,
     progress: Optional[ProgressCallback] = None,
 ) -> SimplifyResult:
@@ -428,7 +429,7 @@ def simplify(
         priority: "length" (shortest edge first) or "quadric" (smallest surface error first).
         placement: "half-edge" (the removed end goes into the other) or "optimal" (the merged vertex at
             the best point of the edge when both ends are inside or on one smooth surface patch).
-        bucket_size: the bucket threshold k_v of the octrees of the rounds (default 50, or the Octree's;
+        bucket_size: the bucket threshold k_v of the octrees of the rounds (default ``"auto"``, or the Octree's;
             ``math.inf``: one leaf, the global algorithm).
         threads: the number of threads (default: all cores, or the Octree's).
         progress: called as ``progress(removed, to_remove)`` (tetrahedra, never decreasing) at the start
@@ -607,7 +608,7 @@ def remesh(
     min_radius_ratio: float = 0.1,
     feature_angle: float = 40.0,
     max_error: Optional[Union[float, str]] = "0.2%",
-    bucket_size: Optional[Union[int, float]] = None,
+    bucket_size: Optional[Union[int, float, str]] = None,
     threads: Optional[int] = None,
 ) -> RemeshResult:
     """Remeshes a mesh towards a target edge length h leaf by leaf, as ``prstar remesh``: each round
@@ -627,7 +628,7 @@ def remesh(
             one positive value per vertex (an edge's target is the mean of its ends').
         iterations: the rounds, in [1, 1000] (default 5); they stop earlier when one changes nothing.
         min_dihedral, max_dihedral, min_radius_ratio, feature_angle, max_error: as :func:`simplify`.
-        bucket_size: the bucket threshold k_v of the octrees of the rounds (default 50, or the Octree's;
+        bucket_size: the bucket threshold k_v of the octrees of the rounds (default ``"auto"``, or the Octree's;
             ``math.inf``: one leaf).
         threads: the number of threads (default: all cores, or the Octree's).
 

@@ -43,7 +43,7 @@ class ValidationReport:
 def validate(
     mesh: MeshLike,
     *,
-    bucket_size: Optional[Union[int, float]] = None,
+    bucket_size: Optional[Union[int, float, str]] = None,
     max_depth: Optional[int] = None,
     threads: Optional[int] = None,
     progress: Optional[ProgressCallback] = None,
@@ -82,7 +82,7 @@ def simplify(
     max_error: Optional[Union[float, str]] = "0.2%",
     priority: str = "length",
     placement: str = "half-edge",
-    bucket_size: Optional[Union[int, float]] = None,
+    bucket_size: Optional[Union[int, float, str]] = None,
     threads: Optional[int] = None,
     progress: Optional[ProgressCallback] = None,
 ) -> SimplifyResult:
@@ -112,7 +112,7 @@ def remesh(
     min_radius_ratio: float = 0.1,
     feature_angle: float = 40.0,
     max_error: Optional[Union[float, str]] = "0.2%",
-    bucket_size: Optional[Union[int, float]] = None,
+    bucket_size: Optional[Union[int, float, str]] = None,
     threads: Optional[int] = None,
 ) -> RemeshResult:
     """Local remeshing to a target edge length (``prstar remesh``): edge_length a length or "2%" of the

@@ -95,7 +95,7 @@ def critical_points(
     field: Any = None,
     *,
     gradient: bool = False,
-    bucket_size: Optional[Union[int, float]] = None,
+    bucket_size: Optional[Union[int, float, str]] = None,
     max_depth: Optional[int] = None,
     threads: Optional[int] = None,
     progress: Optional[ProgressCallback] = None,
@@ -114,7 +114,8 @@ def critical_points(
         gradient: also compute the Forman gradient (ProcessLowerStars) and check, as ``prstar
             critical --gradient``, that its critical simplices add up to the Euler characteristic
             (RuntimeError otherwise: a bug to report).
-        bucket_size: the bucket threshold k_v (default 50; ``math.inf``: one leaf), when an octree
+        bucket_size: the bucket threshold k_v (default ``"auto"``: chosen from the mesh, as
+            ``--kv auto``; ``math.inf``: one leaf), when an octree
             is built.
         max_depth: the depth bound of the octree built.
         threads: the number of threads (default: all cores), when an octree is built.
@@ -275,7 +276,7 @@ def morse_complexes(
     persistence: Union[float, str] = 0.0,
     threshold: Optional[float] = None,
     arcs: bool = True,
-    bucket_size: Optional[Union[int, float]] = None,
+    bucket_size: Optional[Union[int, float, str]] = None,
     max_depth: Optional[int] = None,
     threads: Optional[int] = None,
     progress: Optional[ProgressCallback] = None,

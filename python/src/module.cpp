@@ -45,6 +45,7 @@ py::dict statistics_dict(const PSO::Statistics& s) {
     d["kv"] = std::numeric_limits<double>::infinity();
   else
     d["kv"] = s.bucket_size;
+  d["kv_automatic"] = s.automatic_bucket_size;
   d["nodes"] = s.nodes;
   d["leaves"] = s.leaves;
   d["empty_leaves"] = s.empty_leaves;
@@ -114,7 +115,7 @@ py::dict leaves_dict(const Octree& tree) {
 
 std::unique_ptr<Py_octree> make_octree(py::handle points, py::handle tetrahedra, py::handle bucket_size,
                                        py::handle max_depth, py::handle labels, py::handle field,
-                                       py::handle threads) {
+                                       py::handle threads, unsigned relations) {
   const Numpy_input input(points, tetrahedra, labels, field);
   auto o = std::make_unique<Py_octree>();
   o->threads = thread_count(threads);
@@ -122,7 +123,8 @@ std::unique_ptr<Py_octree> make_octree(py::handle points, py::handle tetrahedra,
   {
     Compute_scope scope(o->threads);
     try {
-      o->tree = std::make_unique<Octree>(input, octree_parameters(kv, depth));
+      o->tree = std::make_unique<Octree>(
+          input, octree_parameters(kv, depth, relations ? relations : PSO::default_bucket_size_relations));
     } catch (const std::invalid_argument& e) {
       throw Invalid_mesh(e.what());
     }
@@ -243,8 +245,8 @@ points (n, 3) float32 or float64, tetrahedra (m, 4) of any integer dtype, labels
 field (n,) numeric.  Any memory layout (C, Fortran, strided) is accepted without a conversion.
 Results of the applications come in the user's vertex and tetrahedron order.)")
       .def(py::init(&make_octree), py::arg("points"), py::arg("tetrahedra"), py::kw_only(),
-           py::arg("bucket_size") = 50, py::arg("max_depth") = py::none(), py::arg("labels") = py::none(),
-           py::arg("field") = py::none(), py::arg("threads") = py::none())
+           py::arg("bucket_size") = "auto", py::arg("max_depth") = py::none(), py::arg("labels") = py::none(),
+           py::arg("field") = py::none(), py::arg("threads") = py::none(), py::arg("_relations") = 0u)
       .def_property_readonly("number_of_vertices",
                              [](const Py_octree& o) { return o.get().number_of_vertices(); })
       .def_property_readonly("number_of_tetrahedra",

@@ -160,6 +160,7 @@ const std::vector<Index>& Py_octree::from_original() {
 
 std::size_t bucket_size_argument(py::handle kv) {
   if (kv.is_none()) return Octree::infinite_bucket_size;
+  if (py::isinstance<py::str>(kv) && kv.cast<std::string>() == "auto") return Octree::automatic_bucket_size;
   if (py::isinstance<py::float_>(kv)) {
     const double d = kv.cast<double>();
     if (std::isinf(d) && d > 0) return Octree::infinite_bucket_size;
@@ -167,7 +168,7 @@ std::size_t bucket_size_argument(py::handle kv) {
     throw py::value_error("bucket_size: must be a positive integer or math.inf");
   }
   if (!py::isinstance<py::int_>(kv) || py::isinstance<py::bool_>(kv))
-    throw py::type_error("bucket_size: expected a positive int (or math.inf for a single leaf)");
+    throw py::type_error("bucket_size: expected a positive int (or math.inf for a single leaf, or \"auto\")");
   const long long n = kv.cast<long long>();
   if (n < 1) throw py::value_error("bucket_size: must be a positive integer (or math.inf for a single leaf)");
   return static_cast<std::size_t>(n);

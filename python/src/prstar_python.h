@@ -245,14 +245,17 @@ struct Py_octree {
 };
 
 /// The parameters shared by every octree construction.
-inline auto octree_parameters(std::size_t bucket_size, std::size_t max_depth) {
+inline auto octree_parameters(std::size_t bucket_size, std::size_t max_depth,
+                              unsigned relations = PSO::default_bucket_size_relations) {
   return params::bucket_size(bucket_size)
+      .bucket_size_relations(relations)
       .maximum_depth(max_depth)
       .vertex_permutation(true)
       .tetrahedron_permutation(true);
 }
 
-/// `bucket_size` as Python gives it: a positive int, or `None`/`math.inf` for a single leaf.
+/// `bucket_size` as Python gives it: a positive int, `None`/`math.inf` for a single leaf, or "auto"
+/// (the octree chooses).
 std::size_t bucket_size_argument(py::handle kv);
 /// `max_depth`: `None` (the library's default, 32) or an int in [1, 64].
 std::size_t max_depth_argument(py::handle depth);

@@ -147,7 +147,7 @@ struct Simplify_options {
   double max_error = 0.2; // percent of the diagonal when `error_relative`
   bool error_relative = true;
   bool quadric = false, optimal = false;
-  std::size_t bucket_size = 50;
+  std::size_t bucket_size = Octree::automatic_bucket_size;
   // remesh: the target edge length (percent of the diagonal when `edge_length_relative`; unused with
   // a size field), the rounds
   double edge_length = 0;
@@ -287,8 +287,15 @@ void result_arrays(py::dict& d, Result& res) {
   d["input_tetrahedron"] = to_numpy(std::move(it));
 }
 
+// The k_v the rounds' octrees use by default when the input is an Octree: its own, or "auto" again
+// when it chose its own (each round's octree then chooses, as from arrays).
+std::size_t octree_bucket_size(const Octree& tree) {
+  return tree.has_automatic_bucket_size() ? Octree::automatic_bucket_size : tree.bucket_size();
+}
+
 py::object kv_value(std::size_t kv) {
   if (kv == Octree::infinite_bucket_size) return py::float_(std::numeric_limits<double>::infinity());
+  if (kv == Octree::automatic_bucket_size) return py::str("auto"); // as the tool's JSON: chosen per round
   return py::int_(kv);
 }
 
@@ -386,12 +393,12 @@ py::dict simplify(py::object source, py::object tetrahedra, py::object labels, d
   s.optimal = optimal;
   if (py::isinstance<Py_octree>(source)) {
     Py_octree& o = source.cast<Py_octree&>();
-    s.bucket_size = bucket_size.is_none() ? o.get().bucket_size() : bucket_size_argument(bucket_size);
+    s.bucket_size = bucket_size.is_none() ? octree_bucket_size(o.get()) : bucket_size_argument(bucket_size);
     const std::size_t n = threads.is_none() ? o.threads : thread_count(threads);
     const Octree_input input(o);
     return run_simplify(input, s, n, std::move(progress));
   }
-  s.bucket_size = bucket_size.is_none() ? std::size_t(50) : bucket_size_argument(bucket_size);
+  s.bucket_size = bucket_size.is_none() ? Octree::automatic_bucket_size : bucket_size_argument(bucket_size);
   const Numpy_input input(source, tetrahedra, labels);
   return run_simplify(input, s, thread_count(threads), std::move(progress));
 }
@@ -511,12 +518,12 @@ py::dict remesh(py::object source, py::object tetrahedra, py::object labels, dou
   s.error_relative = error_relative;
   if (py::isinstance<Py_octree>(source)) {
     Py_octree& o = source.cast<Py_octree&>();
-    s.bucket_size = bucket_size.is_none() ? o.get().bucket_size() : bucket_size_argument(bucket_size);
+    s.bucket_size = bucket_size.is_none() ? octree_bucket_size(o.get()) : bucket_size_argument(bucket_size);
     const std::size_t n = threads.is_none() ? o.threads : thread_count(threads);
     const Octree_input input(o);
     return run_remesh(input, s, std::move(sizing), std::move(field_name), n);
   }
-  s.bucket_size = bucket_size.is_none() ? std::size_t(50) : bucket_size_argument(bucket_size);
+  s.bucket_size = bucket_size.is_none() ? Octree::automatic_bucket_size : bucket_size_argument(bucket_size);
   const Numpy_input input(source, tetrahedra, labels);
   return run_remesh(input, s, std::move(sizing), std::move(field_name), thread_count(threads));
 }

@@ -150,6 +150,7 @@ py::dict critical_points(Py_octree& o, py::handle field, bool gradient, py::obje
   c["vertices"] = nv;
   c["tetrahedra"] = tree.number_of_tetrahedra();
   c["kv"] = kv_value(tree);
+  c["kv_automatic"] = tree.has_automatic_bucket_size();
   c["field_min"] = range.first;
   c["field_max"] = range.second;
   c["minima"] = counts.minima;
@@ -297,6 +298,7 @@ py::dict morse_complexes(Py_octree& o, py::handle field, double threshold, py::o
   c["vertices"] = nv;
   c["tetrahedra"] = nt;
   c["kv"] = kv_value(tree);
+  c["kv_automatic"] = tree.has_automatic_bucket_size();
   c["field_min"] = range.first;
   c["field_max"] = range.second;
   c["persistence"] = relative.is_none() ? py::object(py::none()) : py::object(py::float_(fraction));

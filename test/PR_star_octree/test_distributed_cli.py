@@ -76,6 +76,12 @@ def same_summary(one, dist, what):
     for k, v in dist.items():
         if k in DISTRIBUTION_KEYS or k == "seconds" or k == "output":
             continue
+        if k == "kv" and v == "auto":  # each rank chose k_v for its part: the one process chose too
+            check(dist.get("kv_automatic") is True and one.get("kv_automatic") is True,
+                  f"{what}: kv auto, one process: {one.get('kv')} (automatic: {one.get('kv_automatic')})")
+            continue
+        if k == "kv_automatic":
+            continue
         check(k in one and one[k] == v, f"{what}: {k} = {v}, one process: {one.get(k)}")
 
 

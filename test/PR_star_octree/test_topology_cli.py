@@ -687,7 +687,7 @@ def check_arcs(tag, file, j, t):
 
 
 def strip(j):
-    return {k: v for k, v in j.items() if k not in ("seconds", "kv")} if j else j
+    return {k: v for k, v in j.items() if k not in ("seconds", "kv", "kv_automatic")} if j else j
 
 
 def check_invariance(name, mesh_file, field_args, persistence="2%"):

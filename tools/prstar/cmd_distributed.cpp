@@ -52,6 +52,8 @@ std::unique_ptr<Distributed> build(const Options& o, Progress_bar& progress) {
   progress.phase("partitioning and building the local octrees (k_v = " + bucket_size_string(o.kv()) + ")");
   auto tree = std::make_unique<Distributed>(std::move(part),
                                             params::bucket_size(o.kv()).maximum_depth(o.max_depth()));
+  // with --kv auto, each rank's octree chooses k_v for its own part: reported as "auto"
+  o.set_used_kv(o.kv(), o.kv() == CGAL::PR_star_octree::automatic_bucket_size);
   return tree;
 }
 
@@ -114,7 +116,7 @@ int stats_distributed(const Options& o) {
         .field("boundary_triangles", c.boundary_triangles);
     j.field("nonmanifold_triangles", c.nonmanifold_triangles);
     j.field("euler_characteristic", c.euler_characteristic()).key("kv");
-    json_kv(j, o.kv()).field("ranks", tree->number_of_ranks());
+    json_kv(j, o).field("ranks", tree->number_of_ranks());
     j.field("ghost_tetrahedra", sum[1])
         .field("ghost_fraction", ghost_fraction)
         .field("ghost_vertices", sum[2]);
@@ -124,8 +126,8 @@ int stats_distributed(const Options& o) {
     return exit_success;
   }
   std::cout << o.input() << ": " << c.vertices << " vertices, " << c.tetrahedra << " tetrahedra, on "
-            << tree->number_of_ranks() << " ranks (k_v = " << bucket_size_string(o.kv()) << ", "
-            << fixed(seconds, 3) << " s)\n";
+            << tree->number_of_ranks() << " ranks (k_v = " << o.kv_label() << ", " << fixed(seconds, 3)
+            << " s)\n";
   std::cout << "  " << c.edges << " edges, " << c.triangles << " triangles (" << c.boundary_triangles
             << " on the boundary), Euler characteristic " << c.euler_characteristic() << "\n";
   if (c.nonmanifold_triangles)

@@ -495,6 +495,7 @@ Json& json_kv(Json& j, const Options& o) {
 }
 
 std::string Options::kv_label() const {
+  if (used_kv() == Octree::automatic_bucket_size) return "auto"; // (chosen by each rank's octree)
   return bucket_size_string(used_kv()) + (used_kv_automatic_ ? " (auto)" : "");
 }
 

@@ -111,6 +111,10 @@ constexpr unsigned default_bucket_size_relations = VERTEX_LINKS | TRIANGLES;
 /// kept within [64, 4096], and at most |V| / 16 (rounded down to a power of two, at least 64) so
 /// that a small mesh still has leaves for several threads.
 ///
+/// \param number_of_vertices |V|
+/// \param number_of_tetrahedra |T|
+/// \param relations the relations the leaves will build (a combination of `Relations`; 0 or none of them:
+///        `default_bucket_size_relations`)
 /// \param cache_bytes the cache to size the leaves for; 0 for `cache_bytes_per_core()`
 inline Bucket_size_choice choose_bucket_size(std::size_t number_of_vertices, std::size_t number_of_tetrahedra,
                                              unsigned relations = default_bucket_size_relations,
