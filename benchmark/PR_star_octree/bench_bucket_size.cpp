@@ -8,7 +8,9 @@
 // is from its best over the sweep.  Times are the minimum of several repetitions in one process
 // after a warm-up.
 //
-// usage: bench_bucket_size [--kv 16,32,...] [--reps R] [--threads 1,2] [--csv OUT.csv] MESH...
+// usage: bench_bucket_size [--kv 16,32,...] [--reps R] [--threads 1,2] [--apps build,...,counts]
+//                          [--csv OUT.csv] [--calibrate] MESH...
+// (`counts` is count_simplices(), not in the default list)
 // Prints a Markdown table on stdout.
 
 #include <CGAL/PR_star_octree.h>
@@ -45,8 +47,8 @@ using prstar_bench::base_name;
 using prstar_bench::best_of;
 using prstar_bench::kv_name;
 
-const char* const usage = "usage: bench_bucket_size [--kv 16,32,...] [--reps R] [--threads 1,2] [--csv "
-                          "OUT.csv] [--calibrate] MESH...\n";
+const char* const usage = "usage: bench_bucket_size [--kv 16,32,...] [--reps R] [--threads 1,2] [--apps "
+                          "build,boundary,curvature,validity,VT,edges,counts] [--csv OUT.csv] [--calibrate] MESH...\n";
 
 std::vector<std::size_t> parse_list(const std::string& s) {
   std::vector<std::size_t> r;
@@ -56,13 +58,14 @@ std::vector<std::size_t> parse_list(const std::string& s) {
 }
 
 // The applications timed at each k_v, in the columns' order.
-const std::vector<std::string> applications = {"build", "boundary", "curvature", "validity", "VT", "edges"};
+std::vector<std::string> applications = {"build", "boundary", "curvature", "validity", "VT", "edges"};
 
 // The relations each application's leaves build (what its automatic k_v is sized for).
 unsigned relations_of(const std::string& app) {
   if (app == "curvature") return P::VERTEX_LINKS | P::LOCAL_TETRAHEDRA;
   if (app == "VT") return P::VERTEX_TETRAHEDRA;
   if (app == "edges") return P::EDGES;
+  if (app == "counts") return P::count_simplices_relations;
   return P::VERTEX_LINKS | P::TRIANGLES; // build (the default), boundary, validity
 }
 
@@ -85,6 +88,10 @@ double time_application(const std::string& app, const Mesh& mesh, const Octree& 
       P::compute_curvature(tree, P::coordinate_field_map(tree, 2), CGAL::make_property_map(curv));
     });
   }
+  if (app == "counts")
+    return best_of(reps, [&] {
+      if (P::count_simplices(tree).tetrahedra != tree.number_of_tetrahedra()) std::abort();
+    });
   if (app == "validity")
     return best_of(reps, [&] {
       if (P::check_validity(tree).tetrahedra != tree.number_of_tetrahedra()) std::abort();
@@ -160,7 +167,11 @@ int main(int argc, char** argv) {
       csv_file = argv[++i];
     else if (a == "--kv" && i + 1 < argc)
       kvs = prstar_bench::parse_kv_list(argv[++i]);
-    else if (a == "--calibrate")
+    else if (a == "--apps" && i + 1 < argc) {
+      applications.clear();
+      std::stringstream in(argv[++i]);
+      for (std::string x; std::getline(in, x, ',');) applications.push_back(x);
+    } else if (a == "--calibrate")
       calibration = true;
     else if (a == "--threads" && i + 1 < argc)
       thread_counts = parse_list(argv[++i]);

@@ -477,6 +477,7 @@ private:
   void set_labels_uniform_if_possible();
   template <class ConcurrencyTag>
   void build_in_place();
+  template <class ConcurrencyTag>
   void split_vertices(std::vector<Index>& order);
   template <class ConcurrencyTag>
   void sort_and_orient_tetrahedra(const std::vector<Index>& from_original);

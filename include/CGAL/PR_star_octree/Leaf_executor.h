@@ -245,6 +245,10 @@ void for_each_leaf(const PR_star_octree_3<GT, I>& tree, unsigned relations, Func
 }
 
 /// \ingroup PkgPRStarOctreeRef
+/// The relations `count_simplices()` builds in each leaf (what to size an automatic k_v for).
+constexpr unsigned count_simplices_relations = VERTEX_VERTICES | TRIANGLES;
+
+/// \ingroup PkgPRStarOctreeRef
 /// Counts vertices, edges, triangles (and boundary triangles) and tetrahedra by streaming over the
 /// leaves: each simplex is counted by the leaf owning its smallest vertex.
 /// \tparam ConcurrencyTag `CGAL::Parallel_tag`, `CGAL::Sequential_tag` or the default
@@ -267,13 +271,17 @@ Simplex_counts count_simplices(const PR_star_octree_3<GT, I>& tree,
   using Local = Leaf_topology<PR_star_octree_3<GT, I>>;
   Simplex_counts s;
   s.tetrahedra = tree.number_of_tetrahedra();
+  // The edges are counted from VV (each by its smaller vertex, whose leaf owns it), not built with
+  // their stars: VV holds a quarter of the bytes of the edges (bench_bucket_size --calibrate).
   Leaf_executor<ConcurrencyTag>().map_reduce(
-      tree, VERTEX_TETRAHEDRA | EDGES | TRIANGLES, 0,
+      tree, count_simplices_relations, 0,
       [](int, const Local& local) {
         Simplex_counts c;
-        for (auto v = local.vertex_begin(); v < local.vertex_end(); ++v)
-          if (!local.vertex_tetrahedra(v).empty()) ++c.vertices;
-        for (std::size_t e = 0; e < local.number_of_edges(); ++e) c.edges += local.owns_edge(e);
+        for (auto v = local.vertex_begin(); v < local.vertex_end(); ++v) {
+          const auto adjacent = local.vertex_vertices(v);
+          if (!adjacent.empty()) ++c.vertices; // (a vertex of a tetrahedron has three neighbours)
+          for (auto w : adjacent) c.edges += (w > v);
+        }
         for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
           if (!local.owns_triangle(f)) continue;
           ++c.triangles;

@@ -11,7 +11,9 @@
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/internal/concurrency.h>
 
+#include <atomic>
 #include <bitset>
+#include <mutex>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -166,12 +168,7 @@ void PR_star_octree_3<GT, I>::take_mesh(PR_star_octree::Indexed_tetrahedral_mesh
   if (has_labels_ && labels_.size() != nt)
     throw std::invalid_argument("PR_star_octree_3: " + std::to_string(labels_.size()) + " labels for " +
                                 std::to_string(nt) + " tetrahedra");
-  for (std::size_t t = 0; t < nt; ++t)
-    for (int k = 0; k < 4; ++k)
-      if (static_cast<std::size_t>(tetrahedra_[t][k]) >= nv)
-        throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
-                                    " has vertex index " + std::to_string(tetrahedra_[t][k]) +
-                                    " out of range [0, " + std::to_string(nv) + ")");
+  // (the vertex indices are checked by build_in_place(), in parallel)
 }
 
 template <class GT, class I>
@@ -195,27 +192,83 @@ void PR_star_octree_3<GT, I>::build_in_place() {
     automatic_ = true;
   }
 
-  // Repeated vertices in a tetrahedron (in the user's numbering, for the message).
-  for (std::size_t t = 0; t < nt; ++t) {
-    const Tetrahedron& r = tetrahedra_[t];
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        if (r[i] == r[j])
-          throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
-                                      " lists vertex " + std::to_string(r[i]) + " twice");
+  using PR_star_octree::internal::for_each_block;
+  // Vertex indices out of range, then repeated vertices in a tetrahedron (in the user's numbering,
+  // for the message): the first tetrahedron at fault is reported, whatever the number of threads.
+  {
+    constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
+    std::atomic<std::size_t> out_of_range{none}, repeated{none};
+    const auto lower = [](std::atomic<std::size_t>& a, std::size_t t) {
+      for (std::size_t cur = a.load(); t < cur && !a.compare_exchange_weak(cur, t);) {
+      }
+    };
+    for_each_block<ConcurrencyTag>(nt, 1 << 16, [&](std::size_t b, std::size_t e) {
+      for (std::size_t t = b; t < e; ++t) {
+        const Tetrahedron& r = tetrahedra_[t];
+        if (static_cast<std::size_t>((std::max)((std::max)(r[0], r[1]), (std::max)(r[2], r[3]))) >= nv) {
+          lower(out_of_range, t);
+        } else if (r[0] == r[1] || r[0] == r[2] || r[0] == r[3] || r[1] == r[2] || r[1] == r[3] ||
+                   r[2] == r[3]) {
+          lower(repeated, t);
+        }
+      }
+    });
+    if (out_of_range.load() != none) {
+      const std::size_t t = out_of_range.load();
+      Index first = 0;
+      for (Index x : tetrahedra_[t])
+        if (static_cast<std::size_t>(x) >= nv) {
+          first = x;
+          break;
+        }
+      throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
+                                  " has vertex index " + std::to_string(first) + " out of range [0, " +
+                                  std::to_string(nv) + ")");
+    }
+    if (repeated.load() != none) {
+      const std::size_t t = repeated.load();
+      const Tetrahedron& r = tetrahedra_[t];
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+          if (r[i] == r[j])
+            throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
+                                        " lists vertex " + std::to_string(r[i]) + " twice");
+    }
   }
 
-  // 1. Bounding cube (and finite coordinates).
+  // 1. Bounding cube (and finite coordinates), block by block: the minima and maxima do not depend on
+  // the blocks, and the first vertex with a non-finite coordinate is reported.
   std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
-  for (std::size_t i = 0; i < nv; ++i) {
-    const std::array<double, 3> c = coordinates(points_[i]);
-    for (int a = 0; a < 3; ++a) {
-      if (!std::isfinite(c[a]))
-        throw std::invalid_argument("PR_star_octree_3: vertex " + std::to_string(i) +
-                                    " has a non-finite coordinate");
-      if (i == 0 || c[a] < lo[a]) lo[a] = c[a];
-      if (i == 0 || c[a] > hi[a]) hi[a] = c[a];
-    }
+  {
+    constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
+    std::atomic<std::size_t> non_finite{none};
+    std::mutex box_mutex;
+    bool first_block = true;
+    for_each_block<ConcurrencyTag>(nv, 1 << 16, [&](std::size_t b, std::size_t e) {
+      std::array<double, 3> l{{0, 0, 0}}, h{{0, 0, 0}};
+      for (std::size_t i = b; i < e; ++i) {
+        const std::array<double, 3> c = coordinates(points_[i]);
+        if (!(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]))) {
+          for (std::size_t cur = non_finite.load(); i < cur && !non_finite.compare_exchange_weak(cur, i);) {
+          }
+          return;
+        }
+        for (int a = 0; a < 3; ++a) {
+          if (i == b || c[a] < l[a]) l[a] = c[a];
+          if (i == b || c[a] > h[a]) h[a] = c[a];
+        }
+      }
+      if (b == e) return;
+      std::lock_guard<std::mutex> lock(box_mutex);
+      for (int a = 0; a < 3; ++a) {
+        if (first_block || l[a] < lo[a]) lo[a] = l[a];
+        if (first_block || h[a] > hi[a]) hi[a] = h[a];
+      }
+      first_block = false;
+    });
+    if (non_finite.load() != none)
+      throw std::invalid_argument("PR_star_octree_3: vertex " + std::to_string(non_finite.load()) +
+                                  " has a non-finite coordinate");
   }
   double side = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
   if (!(side > 0)) side = 1.; // empty mesh, a single point or all points coincident
@@ -228,18 +281,22 @@ void PR_star_octree_3<GT, I>::build_in_place() {
   // 2. PR split of the vertices, depth first: `order[new] = original`; V re-indexed in place.
   std::vector<Index> order(nv);
   std::iota(order.begin(), order.end(), Index(0));
-  split_vertices(order);
+  split_vertices<ConcurrencyTag>(order);
   // V and the scalars are gathered into new arrays (one at a time): random reads but sequential
   // writes, much faster than following the cycles of `order` in place, for a transient |V| points.
   const auto gather = [&](auto& a) {
-    std::remove_reference_t<decltype(a)> g;
-    g.reserve(a.size());
-    for (Index o : order) g.push_back(a[o]);
+    std::remove_reference_t<decltype(a)> g(a.size());
+    for_each_block<ConcurrencyTag>(a.size(), 1 << 14, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) g[i] = a[order[i]];
+    });
     a.swap(g);
   };
   gather(points_);
   if (has_scalar_) gather(scalars_);
-  std::vector<Index> from_original = inverse(order);
+  std::vector<Index> from_original(nv);
+  for_each_block<ConcurrencyTag>(nv, 1 << 14, [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) from_original[order[i]] = static_cast<Index>(i);
+  });
   if (keep_vertex_permutation_)
     vertex_to_original_ = std::move(order);
   else
@@ -257,6 +314,7 @@ void PR_star_octree_3<GT, I>::build_in_place() {
 }
 
 template <class GT, class I>
+template <class ConcurrencyTag>
 void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
   struct Item {
     Node_index node;
@@ -268,13 +326,12 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
   leaves_.clear();
   nodes_.push_back(Node{0, static_cast<Index>(nv), 0, 0, 0, 0, 0, 0, no_node, no_node});
   std::vector<Item> stack{Item{0, root_lo_, root_hi_, 0}};
-  std::vector<Index> buffer;
-  std::vector<unsigned char> code;
-
   // Stable counting sort of order[b, e) by octant of the box [lo, hi) (bit a set when coordinate a
-  // >= midpoint): `start[c]` is where octant c begins, relative to b.
+  // >= midpoint): `start[c]` is where octant c begins, relative to b.  `buffer` and `code` are the
+  // caller's scratch.
   const auto sort_by_octant = [&](Index b, Index e, const std::array<double, 3>& lo,
-                                  const std::array<double, 3>& hi, std::array<std::size_t, 9>& start) {
+                                  const std::array<double, 3>& hi, std::array<std::size_t, 9>& start,
+                                  std::vector<Index>& buffer, std::vector<unsigned char>& code) {
     const std::size_t count = e - b;
     const std::array<double, 3> mid = center(lo, hi);
     code.resize(count);
@@ -298,9 +355,9 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
   // tetrahedra and keeps a leaf's relations close in memory.  Depends on the positions only, as the
   // split does (ties, at the finest level, keep the input order).
   constexpr std::size_t leaf_order_group = 8;
-  std::vector<Item> sub;
-  const auto order_leaf = [&](Index b, Index e, const Item& leaf) {
-    sub.assign(1, Item{0, leaf.lo, leaf.hi, leaf.depth});
+  const auto order_leaf = [&](Index b, Index e, const Item& leaf, std::vector<Index>& buffer,
+                              std::vector<unsigned char>& code) {
+    std::vector<Item> sub{Item{0, leaf.lo, leaf.hi, leaf.depth}};
     std::vector<std::pair<Index, Index>> ranges{{b, e}};
     while (!sub.empty()) {
       const Item it = sub.back();
@@ -310,7 +367,7 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
       if (static_cast<std::size_t>(r.second - r.first) <= leaf_order_group || it.depth >= max_depth_)
         continue;
       std::array<std::size_t, 9> start;
-      sort_by_octant(r.first, r.second, it.lo, it.hi, start);
+      sort_by_octant(r.first, r.second, it.lo, it.hi, start, buffer, code);
       for (unsigned c = 8; c-- > 0;) {
         if (start[c + 1] - start[c] <= leaf_order_group) continue;
         Item child{0, it.lo, it.hi, it.depth + 1};
@@ -322,6 +379,9 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
     }
   };
 
+  std::vector<Index> buffer;
+  std::vector<unsigned char> code;
+  std::vector<Item> to_order; // the leaves whose vertices are put in the finer order, afterwards
   while (!stack.empty()) {
     const Item item = stack.back();
     stack.pop_back();
@@ -346,12 +406,12 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
     if (!split) {
       leaves_.push_back(item.node);
       depth_ = (std::max)(depth_, item.depth);
-      if (!coincident) order_leaf(b, e, item);
+      if (!coincident && count > leaf_order_group) to_order.push_back(item);
       continue;
     }
 
     std::array<std::size_t, 9> start;
-    sort_by_octant(b, e, item.lo, item.hi, start);
+    sort_by_octant(b, e, item.lo, item.hi, start, buffer, code);
     const Node_index first = static_cast<Node_index>(nodes_.size());
     if (static_cast<std::size_t>(first) + 8 >= static_cast<std::size_t>(no_node))
       throw std::invalid_argument("PR_star_octree_3: too many octree nodes for the index type");
@@ -367,6 +427,16 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
     }
   }
   std::vector<Index>().swap(buffer);
+  // Each leaf orders its own vertex range: in parallel, the same order for any number of threads.
+  PR_star_octree::internal::for_each_block<ConcurrencyTag>(
+      to_order.size(), 16, [&](std::size_t lb, std::size_t le) {
+        std::vector<Index> leaf_buffer;
+        std::vector<unsigned char> leaf_code;
+        for (std::size_t l = lb; l < le; ++l) {
+          const Node& nd = nodes_[to_order[l].node];
+          order_leaf(nd.vertex_begin, nd.vertex_end, to_order[l], leaf_buffer, leaf_code);
+        }
+      });
   nodes_.shrink_to_fit();
   leaves_.shrink_to_fit();
 }
@@ -466,7 +536,7 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
         tetrahedra_.begin());
   }
   const std::size_t chunks = PR_star_octree::internal::is_parallel<ConcurrencyTag>()
-                                 ? (std::min)(std::size_t(16), (std::max)(std::size_t(1), nt >> 20))
+                                 ? (std::min)(std::size_t(16), (std::max)(std::size_t(1), nt >> 16))
                                  : std::size_t(1);
   const std::size_t chunk_size = chunks ? (nt + chunks - 1) / chunks : nt;
   std::vector<Index> count(chunks * nl, 0); // [chunk][leaf]
