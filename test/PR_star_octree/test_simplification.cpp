@@ -921,8 +921,13 @@ Measures measures(const std::vector<Point>& pts, const Tets& tets) {
     const double area = std::sqrt(CGAL::squared_area(q, r, s)) + std::sqrt(CGAL::squared_area(p, r, s)) +
                         std::sqrt(CGAL::squared_area(p, q, s)) + std::sqrt(CGAL::squared_area(p, q, r));
     const double inradius = 3 * volume / area;
-    const double circumradius = std::sqrt(CGAL::squared_distance(CGAL::circumcenter(p, q, r, s), p));
-    m.min_radius_ratio = std::min(m.min_radius_ratio, 3 * inradius / circumradius);
+    // the circumradius from the edge lengths, R = sqrt((aA+bB+cC)(aA+bB-cC)(aA-bB+cC)(-aA+bB+cC)) / (24 V)
+    // with opposite edges a, A...: no construction that asserts on a tetrahedron flat in doubles
+    const auto len = [](const Point& x, const Point& y) { return std::sqrt(CGAL::squared_distance(x, y)); };
+    const double aA = len(p, q) * len(r, s), bB = len(p, r) * len(q, s), cC = len(p, s) * len(q, r);
+    const double product = (aA + bB + cC) * (aA + bB - cC) * (aA - bB + cC) * (-aA + bB + cC);
+    const double ratio = volume > 0 ? 3 * inradius / (std::sqrt(std::max(product, 0.)) / (24 * volume)) : 0.;
+    m.min_radius_ratio = std::min(m.min_radius_ratio, ratio);
   }
   return m;
 }
