@@ -4,7 +4,8 @@
 # detected).  Run by .ci/run after scripts/test.sh.
 #
 # SANITIZER_SCOPE=all (default): every test executable but three and the prstar tool with its
-#   CMake-script tests (CLI, malformed inputs, awkward meshes, determinism).  Left out (to keep CI
+#   bad-input tests (malformed inputs, awkward meshes; the long CLI comparisons run in the normal
+#   build only, see the ctest call below).  Left out (to keep CI
 #   under its hour; the normal build runs them): test_cgal_baseline (the benchmark's Triangulation_3
 #   baseline, and mesh_quality.h, which prstar info and simplify run in test_cli_everyday and
 #   test_cli), test_c3t3 (the C3T3 adapter: a Mesh_3 translation unit) and test_custom_traits (the
@@ -55,7 +56,12 @@ if [ "$scope" = light ]; then
     ctest --output-on-failure -j "$jobs" -R '^(test_octree|test_io|test_relations|test_fuzz_regressions)$'
   fi
 else
-  ctest --output-on-failure -j "$jobs" -E '^compile_fail_|distributed'
+  # Left to the normal build (correctness, not memory: CI time): the tool's long CLI comparisons
+  # (test_cli 350 s under ASan, test_cli_everyday, test_determinism, test_topology_cli), the
+  # installed-package build (find_package_install), the compile-failure and Doxygen checks.  The
+  # tool's bad-input tests (test_malformed, test_awkward) and the interop tests still run here.
+  ctest --output-on-failure -j "$jobs" \
+    -E '^(compile_fail_.*|test_cli|test_cli_everyday|test_determinism|test_topology_cli|find_package_install|doxygen_warnings)$|distributed'
   # The MPI tests (when MPI was found): Open MPI keeps memory at MPI_Finalize in libraries built
   # without frame pointers, which LeakSanitizer can attribute (and the suppressions match) only
   # with the slow unwinder, and with the MCA components kept loaded; the package's own leaks are
