@@ -12,7 +12,13 @@
 // Each structure is built and queried in a child process (fork), so that its peak RSS is its own.
 // Times are the minimum of several repetitions after a warm-up.
 //
-// usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--csv OUT.csv] MESH...
+// Bytes: for the PR-star octree, the figure of `prstar stats` for the same mesh and k_v
+// (Statistics::bytes_per_tetrahedron_without_permutations(): the octree measured keeps the vertex
+// and tetrahedron permutations its queries answer through, which `prstar stats` does not build),
+// with its breakdown and the permutations kept beside it; the baselines' bytes are their own.
+//
+// usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--csv OUT.csv]
+// MESH...
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/IO.h>
@@ -62,14 +68,16 @@ using Index = std::uint32_t;
 struct Result {
   double build_seconds = 0;
   double vt_seconds = 0;
-  double distortion_seconds = 0;     // discrete distortion of every vertex (boundary test included)
-  double boundary_seconds = 0;       // boundary / interior classification of every vertex
-  double boundary_count_seconds = 0; // PR-star: the paper's count alone, without the link proof
-  double distortion_sum = 0;         // over manifold vertices: must agree across structures
-  std::size_t bytes = 0;             // the whole structure, V and T included
-  std::size_t overhead_bytes = 0;    // the topological part only
-  std::size_t peak_rss_bytes = 0;    // peak RSS growth during build + queries
-  std::size_t checksum = 0;          // sum over all VT of the star sizes (must agree across structures)
+  double distortion_seconds = 0;           // discrete distortion of every vertex (boundary test included)
+  double boundary_seconds = 0;             // boundary / interior classification of every vertex
+  double boundary_count_seconds = 0;       // PR-star: the paper's count alone, without the link proof
+  double distortion_sum = 0;               // over manifold vertices: must agree across structures
+  std::size_t bytes = 0;                   // the whole structure, V and T included (PR-star: as prstar stats)
+  prstar_bench::Bytes_per_tetrahedron bpt; // PR-star: the breakdown of bytes / |T|
+  std::size_t kv = 0;                      // PR-star: the k_v used (the chosen one for "auto")
+  std::size_t overhead_bytes = 0;          // the topological part only
+  std::size_t peak_rss_bytes = 0;          // peak RSS growth during build + queries
+  std::size_t checksum = 0;                // sum over all VT of the star sizes (must agree across structures)
   std::size_t checksum2 = 0;
   std::size_t nodes = 0, leaves = 0;
   double chi = 0, cost_overhead = 0, cost_total = 0;
@@ -110,7 +118,9 @@ Result run_prstar(const Mesh& mesh, std::size_t kv, int reps) {
   r.chi = s.chi;
   r.cost_overhead = s.prstar_overhead_per_vertex;
   r.cost_total = s.prstar_total_per_vertex;
-  r.bytes = s.bytes.total();
+  r.bytes = s.bytes.without_permutations();
+  r.bpt = prstar_bench::Bytes_per_tetrahedron(s);
+  r.kv = s.bucket_size;
   r.overhead_bytes = s.bytes.index();
   std::size_t local_bytes = 0;
   r.vt_seconds = best_of(reps, [&] {
@@ -226,7 +236,8 @@ std::string fmt(const char* f, double v) {
 } // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::size_t> kvs = {10, 20, 50, 100, 200, 400, 800, Octree::infinite_bucket_size};
+  std::vector<std::size_t> kvs = {prstar_bench::automatic_kv,  10, 20, 50, 100, 200, 400, 800,
+                                  Octree::infinite_bucket_size};
   int reps = 3;
   bool with_cgal = true;
   int threads = 0; // 0: TBB's default (every core)
@@ -245,15 +256,17 @@ int main(int argc, char** argv) {
     else if (a == "--kv" && i + 1 < argc) {
       kvs = prstar_bench::parse_kv_list(argv[++i]);
     } else if (!a.empty() && a[0] == '-') {
-      std::cerr << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--csv "
-                   "OUT.csv] MESH...\n";
+      std::cerr
+          << "usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--csv "
+             "OUT.csv] MESH...\n";
       return 2;
     } else
       files.push_back(a);
   }
   if (files.empty()) {
-    std::cerr << "usage: bench_relations [--kv 10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--csv "
-                 "OUT.csv] MESH...\n";
+    std::cerr
+        << "usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--csv "
+           "OUT.csv] MESH...\n";
     return 2;
   }
 
@@ -265,7 +278,9 @@ int main(int argc, char** argv) {
 #endif
   std::ostringstream csv;
   csv << "mesh,vertices,tetrahedra,structure,order,kv,nodes,leaves,chi,cost_overhead_per_vertex,"
-         "cost_total_per_vertex,bytes,overhead_bytes,bytes_per_tet,peak_rss_bytes,build_seconds,vt_seconds,"
+         "cost_total_per_vertex,bytes,overhead_bytes,"
+      << prstar_bench::Bytes_per_tetrahedron::csv_header()
+      << ",peak_rss_bytes,build_seconds,vt_seconds,"
          "vt_vs_ia_file,vt_vs_ia_same_order,vt_vs_cgal_same_order,vt_vs_stream,bytes_vs_ia,bytes_vs_cgal,"
          "overhead_vs_cgal,distortion_seconds,distortion_vs_ia_same_order,distortion_vs_cgal_same_order,"
          "boundary_seconds,boundary_vs_ia_same_order,boundary_count_seconds,boundary_count_vs_ia_same_"
@@ -273,10 +288,12 @@ int main(int argc, char** argv) {
   std::cout
       << "| mesh | structure | order | k_v | |N| | |N_leaf| | chi | cost overhead/|V| | cost total/|V| | "
          "bytes | "
-         "B/tet | peak RSS | build s | VT s | VT/IA (file) | VT/IA (same order) | VT/CGAL (same order) | "
+         "B/tet | B/tet breakdown (PR-star: as prstar stats; + the permutations kept here) | peak RSS | "
+         "build s | VT s | VT/IA (file) | VT/IA (same order) | VT/CGAL (same order) | "
          "VT/stream | bytes/IA | bytes/CGAL | overhead/CGAL | distortion s | dist/IA (same order) | "
          "dist/CGAL (same order) | boundary s | bnd/IA (same order) | count-only boundary s | count/IA |\n"
-      << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+      << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|--"
+         "-:|"
          "---:|---:|---:|---:|---:|---:|---:|---:|\n";
 
   for (const std::string& file : files) {
@@ -323,6 +340,7 @@ int main(int argc, char** argv) {
       std::cerr << "  PR-star k_v = " << kv_name(kv) << " ...\n";
       rows.push_back({"PR-star", "file", kv_name(kv),
                       prstar_bench::in_child<Result>([&] { return run_prstar(file_mesh, kv, reps); })});
+      if (kv == prstar_bench::automatic_kv) rows.back().kv += " (" + std::to_string(rows.back().r.kv) + ")";
     }
     const Result& ia_file = rows[0].r;
     const Result& ia_same = rows[1].r;
@@ -359,6 +377,7 @@ int main(int argc, char** argv) {
                 << (r.cost_overhead > 0 ? fmt("%.2f", r.cost_overhead) : "-") << " | "
                 << (r.cost_total > 0 ? fmt("%.2f", r.cost_total) : "-") << " | " << r.bytes << " | "
                 << fmt("%.1f", double(r.bytes) / T) << " | "
+                << (pr ? r.bpt.breakdown() + fmt(" (+ %.2f)", r.bpt.permutations) : "-") << " | "
                 << fmt("%.1f MiB", double(r.peak_rss_bytes) / 1048576.) << " | "
                 << fmt("%.4f", r.build_seconds) << " | " << fmt("%.4f", r.vt_seconds) << " | "
                 << fmt("%.2f", vs_ia_file) << " | " << fmt("%.2f", vs_ia_same) << " | "
@@ -373,14 +392,15 @@ int main(int argc, char** argv) {
       csv << name << ',' << file_mesh.points.size() << ',' << file_mesh.tetrahedra.size() << ','
           << row.structure << ',' << row.order << ',' << row.kv << ',' << (pr ? r.nodes : 0) << ','
           << (pr ? r.leaves : 0) << ',' << r.chi << ',' << r.cost_overhead << ',' << r.cost_total << ','
-          << r.bytes << ',' << r.overhead_bytes << ',' << double(r.bytes) / T << ',' << r.peak_rss_bytes
+          << r.bytes << ',' << r.overhead_bytes << ','
+          << (pr ? r.bpt.csv() : fmt("%.4f", double(r.bytes) / T) + ",0,0,0,0,0,0") << ',' << r.peak_rss_bytes
           << ',' << r.build_seconds << ',' << r.vt_seconds << ',' << vs_ia_file << ',' << vs_ia_same << ','
           << vs_cgal << ',' << vs_stream << ',' << bytes_ia << ',' << bytes_cgal << ',' << overhead_cgal
           << ',' << r.distortion_seconds << ',' << dist_ia << ',' << dist_cgal << ',' << r.boundary_seconds
           << ',' << bnd_ia << ',' << r.boundary_count_seconds << ','
           << (pr ? r.boundary_count_seconds / ia_same.boundary_seconds : 0.) << '\n';
     }
-    std::cout << "| " << name << " | streaming pass over T | file | - | | | | | | | | | | "
+    std::cout << "| " << name << " | streaming pass over T | file | - | | | | | | | | | | | "
               << fmt("%.4f", stream) << " | | | | 1.0 | | | | | | | | | | |\n";
     std::cout.flush();
   }

@@ -3,15 +3,17 @@
 //
 // bench_scale: the PR-star octree from 1M to 100M tetrahedra (issue 10, item 7).
 //
-// usage: bench_scale [--cells 55,120,203,260] [--threads 1,2] [--kv 200] [--cgal-max T] [--keep] DIR
+// usage: bench_scale [--cells 55,120,203,260] [--threads 1,2] [--kv auto|K] [--cgal-max T] [--keep] DIR
 //   For each N of --cells, makes DIR/lattice_N.vtu with `prstar generate --shape lattice --cells N`
 //   (a jittered Kuhn lattice, 6 N^3 tetrahedra, a scalar field, raw binary VTU; kept if present).
 //   Then, for each thread count, three forked children each read the file and build the octree in
-//   place (k_v = --kv, no tetrahedron permutation), then run one application: boundary
+//   place as the prstar command does without an output file (k_v = --kv, default auto, sized for the
+//   application's relations as the tool sizes it; no permutations), then run one application: boundary
 //   (compute_boundary, the paper's link count plus the link check), curvature
 //   (compute_curvature of the scalar field: discrete distortion), stats (statistics() and
 //   count_simplices).  Reported per child: read, build and application seconds, its peak RSS, and
-//   the structure's bytes (B/tet, peak RSS / structure); per size, the speed-up of 2 threads over 1.
+//   the structure's bytes (B/tet as prstar stats reports it, with its breakdown; peak RSS / structure);
+//   per size, the speed-up of 2 threads over 1.
 //   The children with more threads must give the same counts (checked, "MISMATCH" otherwise).
 //   CGAL's Triangulation_3 (the baseline of bench_relations) is built on the meshes of at most
 //   --cgal-max tetrahedra (default 11M): build seconds, bytes, peak RSS, B/tet; the number of
@@ -64,7 +66,8 @@ struct Result {
   bool ok = false;
   std::size_t peak_rss_bytes = 0;
   double read_s = 0, build_s = 0, application_s = 0;
-  std::size_t vertices = 0, tetrahedra = 0, structure_bytes = 0;
+  std::size_t vertices = 0, tetrahedra = 0, structure_bytes = 0, kv = 0;
+  prstar_bench::Bytes_per_tetrahedron bpt;
   std::size_t check[3] = {0, 0, 0}; // counts that must not depend on the number of threads
   double value = 0;                 // the same (sum of the distortions)
 };
@@ -98,11 +101,22 @@ Result run(const std::string& file, std::size_t kv, std::size_t threads, Applica
   CGAL::PR_star_octree::IO::read_tetrahedral_mesh(file, mesh);
   r.read_s = now() - t0;
   t0 = now();
-  const Octree tree(std::move(mesh), params::bucket_size(kv).tetrahedron_permutation(false));
+  // the relations the tool sizes the automatic k_v for: curvature's links and local tetrahedra,
+  // the default (links, triangles) for boundary and stats
+  const unsigned relations = app == CURVATURE
+                                 ? CGAL::PR_star_octree::VERTEX_LINKS | CGAL::PR_star_octree::LOCAL_TETRAHEDRA
+                                 : CGAL::PR_star_octree::default_bucket_size_relations;
+  const Octree tree(std::move(mesh), params::bucket_size(kv)
+                                         .bucket_size_relations(relations)
+                                         .vertex_permutation(false)
+                                         .tetrahedron_permutation(false));
   r.build_s = now() - t0;
   r.vertices = tree.number_of_vertices();
   r.tetrahedra = tree.number_of_tetrahedra();
-  r.structure_bytes = tree.statistics().bytes.total();
+  const auto stats = tree.statistics();
+  r.structure_bytes = stats.bytes.without_permutations();
+  r.bpt = prstar_bench::Bytes_per_tetrahedron(stats);
+  r.kv = stats.bucket_size;
   t0 = now();
   if (app == BOUNDARY) {
     std::vector<CGAL::PR_star_octree::Vertex_type> types(tree.number_of_vertices());
@@ -167,7 +181,7 @@ std::size_t mem_total_bytes() {
 
 int main(int argc, char** argv) {
   std::vector<std::size_t> cells{55, 120, 203, 260}, threads{1, 2};
-  std::size_t kv = 200, cgal_max = 11000000;
+  std::size_t kv = prstar_bench::automatic_kv, cgal_max = 11000000;
   bool keep = false;
   std::string dir;
   for (int i = 1; i < argc; ++i) {
@@ -177,7 +191,7 @@ int main(int argc, char** argv) {
     else if (a == "--threads" && i + 1 < argc)
       threads = parse_list(argv[++i]);
     else if (a == "--kv" && i + 1 < argc)
-      kv = std::stoull(argv[++i]);
+      kv = prstar_bench::parse_kv_list(argv[++i]).front();
     else if (a == "--cgal-max" && i + 1 < argc)
       cgal_max = std::stoull(argv[++i]);
     else if (a == "--keep")
@@ -185,23 +199,24 @@ int main(int argc, char** argv) {
     else if (!a.empty() && a[0] != '-' && dir.empty())
       dir = a;
     else {
-      std::cerr
-          << "usage: bench_scale [--cells N,...] [--threads T,...] [--kv K] [--cgal-max T] [--keep] DIR\n";
+      std::cerr << "usage: bench_scale [--cells N,...] [--threads T,...] [--kv auto|K] [--cgal-max T] "
+                   "[--keep] DIR\n";
       return 2;
     }
   }
   if (dir.empty()) {
     std::cerr
-        << "usage: bench_scale [--cells N,...] [--threads T,...] [--kv K] [--cgal-max T] [--keep] DIR\n";
+        << "usage: bench_scale [--cells N,...] [--threads T,...] [--kv auto|K] [--cgal-max T] [--keep] DIR\n";
     return 2;
   }
   fs::create_directories(dir);
   const std::size_t ram = mem_total_bytes();
 
-  std::cout
-      << "| tetrahedra | threads | application | read s | build s | application s | total s | peak RSS MB | "
-         "structure MB | B/tet | peak / structure | speed-up build | speed-up application |\n"
-         "|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::cout << "| tetrahedra | threads | application | k_v | read s | build s | application s | total s | "
+               "peak RSS MB | "
+               "structure MB | B/tet | B/tet breakdown | peak / structure | speed-up build | speed-up "
+               "application |\n"
+               "|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|\n";
   std::vector<std::string> cgal_rows;
   double octree_peak_per_tet = 0;
   for (std::size_t n : cells) {
@@ -231,12 +246,13 @@ int main(int argc, char** argv) {
           octree_peak_per_tet =
               std::max(octree_peak_per_tet, double(r.peak_rss_bytes) / double(r.tetrahedra));
         std::cout << "| " << r.tetrahedra << " | " << t << " | " << application_name[app]
-                  << (same ? "" : " MISMATCH") << " | " << fixed(r.read_s, 2) << " | " << fixed(r.build_s, 2)
-                  << " | " << fixed(r.application_s, 2) << " | "
-                  << fixed(r.read_s + r.build_s + r.application_s, 2) << " | " << mb(r.peak_rss_bytes)
-                  << " | " << mb(r.structure_bytes) << " | "
-                  << fixed(double(r.structure_bytes) / double(r.tetrahedra), 1) << " | "
-                  << fixed(double(r.peak_rss_bytes) / double(r.structure_bytes), 2) << " | "
+                  << (same ? "" : " MISMATCH") << " | "
+                  << (kv == prstar_bench::automatic_kv ? "auto " : "") + std::to_string(r.kv) << " | "
+                  << fixed(r.read_s, 2) << " | " << fixed(r.build_s, 2) << " | " << fixed(r.application_s, 2)
+                  << " | " << fixed(r.read_s + r.build_s + r.application_s, 2) << " | "
+                  << mb(r.peak_rss_bytes) << " | " << mb(r.structure_bytes) << " | "
+                  << fixed(double(r.structure_bytes) / double(r.tetrahedra), 1) << " | " << r.bpt.breakdown()
+                  << " | " << fixed(double(r.peak_rss_bytes) / double(r.structure_bytes), 2) << " | "
                   << (t == threads.front() ? "" : fixed(first.build_s / r.build_s, 2)) << " | "
                   << (t == threads.front() ? "" : fixed(first.application_s / r.application_s, 2)) << " |"
                   << std::endl;
@@ -273,7 +289,7 @@ int main(int argc, char** argv) {
     for (const auto& row : cgal_rows) std::cout << row << '\n';
   }
   if (octree_peak_per_tet > 0)
-    std::cout << "\nPR-star octree (lean construction, k_v = " << kv << "): peak "
+    std::cout << "\nPR-star octree (lean construction, k_v = " << prstar_bench::kv_name(kv) << "): peak "
               << fixed(octree_peak_per_tet, 1) << " B/tet at most, so it fits up to about "
               << fixed(double(ram) / octree_peak_per_tet / 1e6, 0) << "M tetrahedra in this machine's "
               << mb(ram) << " MB (extrapolated)\n";

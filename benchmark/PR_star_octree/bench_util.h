@@ -8,12 +8,15 @@
 #define PRSTAR_BENCH_UTIL_H
 
 #include <CGAL/PR_star_octree/IO.h>
+#include <CGAL/PR_star_octree/Statistics.h>
+#include <CGAL/PR_star_octree/bucket_size.h>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -91,23 +94,69 @@ Result in_child(Job&& job) {
 
 constexpr std::size_t infinite_kv = (std::numeric_limits<std::size_t>::max)();
 
+constexpr std::size_t automatic_kv = CGAL::PR_star_octree::automatic_bucket_size;
+
 inline std::string kv_name(std::size_t kv) {
-  return kv == infinite_kv ? "inf" : std::to_string(kv);
+  return kv == infinite_kv ? "inf" : kv == automatic_kv ? "auto" : std::to_string(kv);
 }
 
-/// "10,20,inf" -> {10, 20, infinite_kv}
+/// "auto,10,20,inf" -> {automatic_kv, 10, 20, infinite_kv}
 inline std::vector<std::size_t> parse_kv_list(const std::string& s) {
   std::vector<std::size_t> r;
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = s.find(',', start);
     const std::string item = s.substr(start, comma - start);
-    r.push_back(item == "inf" ? infinite_kv : std::stoull(item));
+    r.push_back(item == "inf" ? infinite_kv : item == "auto" ? automatic_kv : std::stoull(item));
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
   return r;
 }
+
+/// The bytes per tetrahedron of an octree as `prstar stats` reports them (without the numbering
+/// permutations, which a benchmark keeps when its queries answer in the input numbering) and their
+/// breakdown, the same in every benchmark (issue 24, item 5).
+struct Bytes_per_tetrahedron {
+  double total = 0;        ///< `Statistics::bytes_per_tetrahedron_without_permutations()`
+  double tetrahedra = 0;   ///< T (plain or compact)
+  double points = 0;       ///< V's coordinates
+  double leaf_lists = 0;   ///< the shared parts of the leaf lists
+  double nodes = 0;        ///< nodes and the list of leaves
+  double other = 0;        ///< scalars, labels, the reorientation bits
+  double permutations = 0; ///< the numbering permutations the measured octree kept (not in `total`)
+
+  Bytes_per_tetrahedron() = default;
+  explicit Bytes_per_tetrahedron(const CGAL::PR_star_octree::Statistics& s) {
+    if (s.tetrahedra == 0) return;
+    const double t = double(s.tetrahedra);
+    const auto& b = s.bytes;
+    total = s.bytes_per_tetrahedron_without_permutations();
+    tetrahedra = double(b.tetrahedra) / t;
+    points = double(b.points) / t;
+    leaf_lists = double(b.leaf_tetrahedra) / t;
+    nodes = double(b.nodes) / t;
+    other = double(b.scalars + b.labels + b.reorientation) / t;
+    permutations = double(b.permutations) / t;
+  }
+  /// "T 5.14 + V 4.40 + lists 0.83 + nodes 0.10 + other 1.39"
+  std::string breakdown() const {
+    char text[160];
+    std::snprintf(text, sizeof text, "T %.2f + V %.2f + lists %.2f + nodes %.2f + other %.2f", tetrahedra,
+                  points, leaf_lists, nodes, other);
+    return text;
+  }
+  /// the CSV columns of `csv_header()`
+  std::string csv() const {
+    char text[200];
+    std::snprintf(text, sizeof text, "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f", total, tetrahedra, points,
+                  leaf_lists, nodes, other, permutations);
+    return text;
+  }
+  static const char* csv_header() {
+    return "bytes_per_tet,bpt_tetrahedra,bpt_points,bpt_leaf_lists,bpt_nodes,bpt_other,bpt_permutations_kept";
+  }
+};
 
 /// Writes `text` to `path`; false (with a message) when it cannot.
 inline bool write_text_file(const std::string& path, const std::string& text) {

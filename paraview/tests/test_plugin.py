@@ -458,10 +458,11 @@ def test_octree(a, src, vtu, name):
 
 def test_simplify(a, src, vtu, name):
     out = os.path.join(a.work, name + "_simplified.vtu")
-    # (the plugin's BucketSize defaults to 50; the tool's --kv to auto)
+    # (the same k_v on both sides: the rounds' leaves decide which collapses are tried first)
     j = prstar(["simplify", vtu, "--target", "0.6", "--min-dihedral", "4", "--feature-angle", "35",
                 "--max-error", "0.3%", "--kv", "50", "-o", out], a.prstar, True)
-    f = PRStarSimplify(Input=src, TargetReduction=0.6, MinimumDihedralAngle=4, FeatureAngle=35, MaximumError=0.3)
+    f = PRStarSimplify(Input=src, TargetReduction=0.6, MinimumDihedralAngle=4, FeatureAngle=35, MaximumError=0.3,
+                       BucketSize=50)
     d = output(f)
     ref = read_vtu(out)
     check(d.GetNumberOfCells() == j["output_tetrahedra"] and d.GetNumberOfPoints() == j["output_vertices"],

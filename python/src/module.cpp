@@ -78,6 +78,7 @@ py::dict statistics_dict(const PSO::Statistics& s) {
   b["nodes"] = s.bytes.nodes;
   b["leaf_tetrahedra"] = s.bytes.leaf_tetrahedra;
   b["permutations"] = s.bytes.permutations;
+  b["reorientation"] = s.bytes.reorientation;
   b["index"] = s.bytes.index();
   d["bytes_detail"] = b;
   return d;

@@ -624,6 +624,9 @@ void check_mesh(const Mesh& mesh, const std::string& name, const std::vector<std
       CHECK_EQUAL(counts.edges, truth.edges.size());
       CHECK_EQUAL(counts.triangles, truth.faces.size());
       CHECK_EQUAL(counts.boundary_triangles, truth.boundary_faces());
+      std::size_t nonmanifold_faces = 0;
+      for (const auto& f : truth.faces) nonmanifold_faces += f.second.size() > 2;
+      CHECK_EQUAL(counts.nonmanifold_triangles, nonmanifold_faces);
       CHECK_EQUAL(counts.vertices, truth.referenced);
       CHECK(counts.euler_characteristic() == (long long)truth.referenced - (long long)truth.edges.size() +
                                                  (long long)truth.faces.size() -
@@ -680,6 +683,31 @@ int main(int argc, char** argv) {
       CHECK_EQUAL(owned, std::size_t(19));
     }
     check_mesh(cube, "cube (6 tetrahedra)", kvs, true);
+  }
+
+  // A triangle in three tetrahedra (a book of three pages) beside a lone tetrahedron: 10 + 4
+  // triangles, the shared one non-manifold, the 9 other faces of the pages and the 4 of the lone
+  // tetrahedron on the boundary; also checked against the brute force.
+  {
+    Mesh book;
+    book.points = {{0, 0, 0},     {1, 0, 0}, {0, 1, 0}, {0.3, 0.3, 1}, {0.3, 0.3, -1},
+                   {-1, -1, 0.2}, {5, 5, 5}, {6, 5, 5}, {5, 6, 5},     {5, 5, 6}};
+    book.tetrahedra = {{0, 1, 2, 3}, {0, 1, 2, 4}, {0, 1, 2, 5}, {6, 7, 8, 9}};
+    const Truth truth(book); // (check_mesh's extended IA refuses a non-manifold triangle)
+    std::size_t nonmanifold = 0;
+    for (const auto& f : truth.faces) nonmanifold += f.second.size() > 2;
+    CHECK_EQUAL(nonmanifold, std::size_t(1));
+    for (std::size_t kv : {std::size_t(1), std::size_t(2), std::size_t(4), Octree::infinite_bucket_size}) {
+      Octree tree(CGAL::PR_star_octree::make_input(book), CGAL::PR_star_octree::parameters::bucket_size(kv));
+      const auto c = CGAL::PR_star_octree::count_simplices(tree);
+      CHECK_EQUAL(c.nonmanifold_triangles, std::size_t(1));
+      CHECK_EQUAL(c.triangles, std::size_t(10 + 4));
+      CHECK_EQUAL(c.triangles, truth.faces.size());
+      CHECK_EQUAL(c.boundary_triangles, std::size_t(9 + 4));
+      CHECK_EQUAL(c.boundary_triangles, truth.boundary_faces());
+      CHECK_EQUAL(c.edges, truth.edges.size());
+      CHECK_EQUAL(c.vertices, std::size_t(10));
+    }
   }
 
   // Links of more than 64 vertices (the link kernel tests small links on 64-bit masks and larger

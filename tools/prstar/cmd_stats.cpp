@@ -68,13 +68,15 @@ void statistics_json(prstar::Json& j, const CGAL::PR_star_octree::Statistics& s,
       .field("labels", double(s.bytes.labels) * per_tet);
   j.field("nodes", double(s.bytes.nodes) * per_tet)
       .field("leaf_tetrahedra", double(s.bytes.leaf_tetrahedra) * per_tet);
-  j.field("permutations", double(s.bytes.permutations) * per_tet);
+  j.field("permutations", double(s.bytes.permutations) * per_tet)
+      .field("reorientation", double(s.bytes.reorientation) * per_tet);
   j.end_object();
   j.key("bytes_detail").begin_object();
   j.field("points", s.bytes.points).field("scalars", s.bytes.scalars).field("tetrahedra", s.bytes.tetrahedra);
   if (s.bytes.labels) j.field("labels", s.bytes.labels);
   j.field("nodes", s.bytes.nodes).field("leaf_tetrahedra", s.bytes.leaf_tetrahedra);
-  j.field("permutations", s.bytes.permutations).field("index", s.bytes.index());
+  j.field("permutations", s.bytes.permutations).field("reorientation", s.bytes.reorientation);
+  j.field("index", s.bytes.index());
   j.end_object();
   j.end_object();
   j.end_object();

@@ -246,11 +246,12 @@ void for_each_leaf(const PR_star_octree_3<GT, I>& tree, unsigned relations, Func
 
 /// \ingroup PkgPRStarOctreeRef
 /// The relations `count_simplices()` builds in each leaf (what to size an automatic k_v for).
-constexpr unsigned count_simplices_relations = VERTEX_VERTICES | TRIANGLES;
+constexpr unsigned count_simplices_relations = VERTEX_TETRAHEDRA;
 
 /// \ingroup PkgPRStarOctreeRef
 /// Counts vertices, edges, triangles (and boundary triangles) and tetrahedra by streaming over the
-/// leaves: each simplex is counted by the leaf owning its smallest vertex.
+/// leaves: each simplex is counted by the leaf owning its smallest vertex, from that vertex's star
+/// (the relation VT only: the edges and triangles are not built).
 /// \tparam ConcurrencyTag `CGAL::Parallel_tag`, `CGAL::Sequential_tag` or the default
 ///         `CGAL::Parallel_if_available_tag` (the same counts either way)
 /// \param tree the octree
@@ -269,25 +270,49 @@ template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, clas
 Simplex_counts count_simplices(const PR_star_octree_3<GT, I>& tree,
                                const NP& np = parameters::default_values()) {
   using Local = Leaf_topology<PR_star_octree_3<GT, I>>;
+  using Index = typename PR_star_octree_3<GT, I>::Index;
   Simplex_counts s;
   s.tetrahedra = tree.number_of_tetrahedra();
-  // The edges are counted from VV (each by its smaller vertex, whose leaf owns it), not built with
-  // their stars: VV holds a quarter of the bytes of the edges (bench_bucket_size --calibrate).
+  // For each vertex v of the leaf, the edges (v, w) and triangles (v, a, b) with v the smallest
+  // vertex are exactly those of the tetrahedra of v's star whose other vertices are greater than v:
+  // listed from the star and sorted, each distinct edge is counted once, and each triangle's run of
+  // repeats is the number of its tetrahedra (1: on the boundary, 3 or more: non-manifold).  VT holds
+  // a fifth of the bytes per tetrahedron of the triangles (bench_bucket_size --calibrate).
   Leaf_executor<ConcurrencyTag>().map_reduce(
       tree, count_simplices_relations, 0,
       [](int, const Local& local) {
         Simplex_counts c;
-        for (auto v = local.vertex_begin(); v < local.vertex_end(); ++v) {
-          const auto adjacent = local.vertex_vertices(v);
-          if (!adjacent.empty()) ++c.vertices; // (a vertex of a tetrahedron has three neighbours)
-          for (auto w : adjacent) c.edges += (w > v);
-        }
-        for (std::size_t f = 0; f < local.number_of_triangles(); ++f) {
-          if (!local.owns_triangle(f)) continue;
-          ++c.triangles;
-          const std::size_t n = local.triangle_tetrahedra(f).size();
-          c.boundary_triangles += (n == 1);
-          c.nonmanifold_triangles += (n > 2);
+        std::vector<Index> edges;
+        std::vector<std::pair<Index, Index>> triangles;
+        for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v) {
+          const auto star = local.vertex_tetrahedra(v);
+          if (star.begin() == star.end()) continue;
+          ++c.vertices;
+          edges.clear();
+          triangles.clear();
+          for (Index t : star) {
+            const auto& q = local.tetrahedron(t);
+            Index o[3];
+            int n = 0;
+            for (int k = 0; k < 4; ++k)
+              if (q[k] > v) o[n++] = q[k];
+            for (int i = 0; i < n; ++i) {
+              edges.push_back(o[i]);
+              for (int j = i + 1; j < n; ++j)
+                triangles.emplace_back((std::min)(o[i], o[j]), (std::max)(o[i], o[j]));
+            }
+          }
+          std::sort(edges.begin(), edges.end());
+          c.edges += static_cast<std::size_t>(std::unique(edges.begin(), edges.end()) - edges.begin());
+          std::sort(triangles.begin(), triangles.end());
+          for (std::size_t i = 0; i < triangles.size();) {
+            std::size_t j = i + 1;
+            while (j < triangles.size() && triangles[j] == triangles[i]) ++j;
+            ++c.triangles;
+            c.boundary_triangles += (j - i == 1);
+            c.nonmanifold_triangles += (j - i > 2);
+            i = j;
+          }
         }
         return c;
       },

@@ -23,13 +23,18 @@ struct Memory_bytes {
   std::size_t tetrahedra = 0;      ///< T: four indices per tetrahedron
   std::size_t nodes = 0;           ///< N: the octree nodes and the list of leaves
   std::size_t leaf_tetrahedra = 0; ///< the shared parts of the leaf lists: (chi - 1) |T| indices
-  std::size_t permutations = 0;    ///< new -> original numbering of V and T, reorientation bits
+  std::size_t permutations = 0;    ///< new -> original numbering of V and T (when kept)
+  std::size_t reorientation = 0;   ///< one bit per tetrahedron: listed negatively oriented
 
   /// the topological overhead of the PR-star octree: nodes and leaf lists
   std::size_t index() const { return nodes + leaf_tetrahedra; }
   /// the indexed mesh it is built on: V and T
   std::size_t mesh() const { return points + scalars + tetrahedra + labels; }
-  std::size_t total() const { return index() + mesh() + permutations; }
+  std::size_t total() const { return index() + mesh() + permutations + reorientation; }
+  /// `total()` less the numbering permutations: what the same octree holds when built with
+  /// `vertex_permutation(false)` and `tetrahedron_permutation(false)`, the configuration of
+  /// `prstar stats`
+  std::size_t without_permutations() const { return total() - permutations; }
 };
 
 /// \ingroup PkgPRStarOctreeRef
@@ -75,6 +80,13 @@ struct Statistics {
   /// figure of compactness that `prstar stats` and the benchmarks report
   double bytes_per_tetrahedron() const {
     return tetrahedra ? static_cast<double>(bytes.total()) / static_cast<double>(tetrahedra) : 0.;
+  }
+  /// `bytes.without_permutations() / tetrahedra` (0 without tetrahedra): the figure of
+  /// `bytes_per_tetrahedron()` for the octree without its numbering permutations, which
+  /// `prstar stats` and the benchmarks report whatever permutations the structure measured kept
+  double bytes_per_tetrahedron_without_permutations() const {
+    return tetrahedra ? static_cast<double>(bytes.without_permutations()) / static_cast<double>(tetrahedra)
+                      : 0.;
   }
 
   /// the number of tetrahedra of each label (empty when the mesh has no labels)

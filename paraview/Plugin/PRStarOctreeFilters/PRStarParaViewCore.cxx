@@ -209,6 +209,13 @@ private:
   mutable std::chrono::steady_clock::time_point last_{};
 };
 
+// The k_v of the Options: -1 (and below) automatic, 0 one leaf.
+std::size_t bucket_size_of(const Options& o) {
+  return o.bucket_size < 0    ? Octree::automatic_bucket_size
+         : o.bucket_size == 0 ? Octree::infinite_bucket_size
+                              : std::size_t(o.bucket_size);
+}
+
 // What the results need of the octree's permutations: vertices in the grid's numbering (results per
 // point), tetrahedra too (results per cell), or neither (the octree itself).
 enum class Numbering { NONE, VERTICES, VERTICES_AND_TETRAHEDRA };
@@ -216,7 +223,7 @@ enum class Numbering { NONE, VERTICES, VERTICES_AND_TETRAHEDRA };
 // The octree of the grid's tetrahedra, keeping the permutations the results need (each costs 4 bytes
 // an element and its time).
 std::unique_ptr<Octree> make_octree(const Grid_input& input, const Options& o, Numbering n) {
-  const std::size_t kv = o.bucket_size <= 0 ? Octree::infinite_bucket_size : std::size_t(o.bucket_size);
+  const std::size_t kv = bucket_size_of(o);
   try {
     return std::make_unique<Octree>(input,
                                     params::bucket_size(kv)
@@ -625,7 +632,7 @@ Outcome simplify(vtkUnstructuredGrid* in, const Simplify_options& s, vtkUnstruct
   visitor.progress = &p;
   visitor.input = input.number_of_tetrahedra();
   visitor.total = (std::max<std::size_t>)(1, std::size_t(std::ceil(s.target * double(visitor.input))));
-  const std::size_t kv = o.bucket_size <= 0 ? Octree::infinite_bucket_size : std::size_t(o.bucket_size);
+  const std::size_t kv = bucket_size_of(o);
   std::vector<char> none;
   const std::vector<char>& constrained = s.constrained != nullptr ? *s.constrained : none;
   if (s.constrained != nullptr && constrained.size() != input.number_of_vertices())

@@ -29,7 +29,7 @@ namespace prstar_paraview {
 
 /// What every function takes besides its input.
 struct Options {
-  int bucket_size = 50; ///< k_v; 0 or less: one leaf (k_v = infinity)
+  int bucket_size = -1; ///< k_v; -1: chosen by the octree (automatic); 0: one leaf (k_v = infinity)
   int threads = 0;      ///< 0: all the cores
   /// called with the fraction done, on the calling thread only, at most about 20 times a second
   std::function<void(double)> progress;

@@ -29,7 +29,7 @@ public:
 
   ///@{
   /// The bucket threshold k_v of the octree (default 50); 0 for one leaf (k_v = infinity).
-  vtkSetClampMacro(BucketSize, int, 0, VTK_INT_MAX);
+  vtkSetClampMacro(BucketSize, int, -1, VTK_INT_MAX);
   vtkGetMacro(BucketSize, int);
   ///@}
 
@@ -76,7 +76,7 @@ protected:
   int RunOnGhostedInput(vtkInformationVector** inputVector, vtkInformationVector* outputVector, bool labels,
                         F&& work);
 
-  int BucketSize = 50;
+  int BucketSize = -1;
   int NumberOfThreads = 0;
   std::string LabelArrayName = "label";
 

@@ -681,8 +681,8 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
       leaf_offsets_.capacity() * sizeof(std::uint16_t) +
       leaf_groups_.capacity() * sizeof(PR_star_octree::internal::Leaf_list_group<Index>);
   s.bytes.permutations =
-      (vertex_to_original_.capacity() + tetrahedron_to_original_.capacity()) * sizeof(Index) +
-      reoriented_.capacity() * sizeof(std::uint64_t);
+      (vertex_to_original_.capacity() + tetrahedron_to_original_.capacity()) * sizeof(Index);
+  s.bytes.reorientation = reoriented_.capacity() * sizeof(std::uint64_t);
   return s;
 }
 
