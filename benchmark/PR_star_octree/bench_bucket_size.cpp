@@ -63,7 +63,7 @@ std::vector<std::string> applications = {"build", "boundary", "curvature", "vali
 
 // The relations each application's leaves build (what its automatic k_v is sized for).
 unsigned relations_of(const std::string& app) {
-  if (app == "curvature") return P::VERTEX_LINKS | P::LOCAL_TETRAHEDRA;
+  if (app == "curvature") return P::compute_curvature_relations;
   if (app == "VT") return P::VERTEX_TETRAHEDRA;
   if (app == "edges") return P::EDGES;
   if (app == "counts") return P::count_simplices_relations;

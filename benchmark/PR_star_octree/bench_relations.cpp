@@ -233,6 +233,10 @@ std::string fmt(const char* f, double v) {
   return b;
 }
 
+const char* const usage =
+    "usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--threads N] [--no-cgal] "
+    "[--csv OUT.csv] MESH...\n";
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -256,17 +260,13 @@ int main(int argc, char** argv) {
     else if (a == "--kv" && i + 1 < argc) {
       kvs = prstar_bench::parse_kv_list(argv[++i]);
     } else if (!a.empty() && a[0] == '-') {
-      std::cerr
-          << "usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--csv "
-             "OUT.csv] MESH...\n";
+      std::cerr << usage;
       return 2;
     } else
       files.push_back(a);
   }
   if (files.empty()) {
-    std::cerr
-        << "usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--csv "
-           "OUT.csv] MESH...\n";
+    std::cerr << usage;
     return 2;
   }
 

@@ -103,9 +103,8 @@ Result run(const std::string& file, std::size_t kv, std::size_t threads, Applica
   t0 = now();
   // the relations the tool sizes the automatic k_v for: curvature's links and local tetrahedra,
   // the default (links, triangles) for boundary and stats
-  const unsigned relations = app == CURVATURE
-                                 ? CGAL::PR_star_octree::VERTEX_LINKS | CGAL::PR_star_octree::LOCAL_TETRAHEDRA
-                                 : CGAL::PR_star_octree::default_bucket_size_relations;
+  const unsigned relations = app == CURVATURE ? CGAL::PR_star_octree::compute_curvature_relations
+                                              : CGAL::PR_star_octree::default_bucket_size_relations;
   const Octree tree(std::move(mesh), params::bucket_size(kv)
                                          .bucket_size_relations(relations)
                                          .vertex_permutation(false)

@@ -171,11 +171,10 @@ int run_curvature(const Options& o) {
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
   // (the curvature builds the links and the leaf's tetrahedra in local ids)
-  const auto np =
-      params::bucket_size(kv)
-          .bucket_size_relations(CGAL::PR_star_octree::VERTEX_LINKS | CGAL::PR_star_octree::LOCAL_TETRAHEDRA)
-          .maximum_depth(o.max_depth())
-          .compact_tetrahedra(o.compact());
+  const auto np = params::bucket_size(kv)
+                      .bucket_size_relations(CGAL::PR_star_octree::compute_curvature_relations)
+                      .maximum_depth(o.max_depth())
+                      .compact_tetrahedra(o.compact());
   const Octree tree(std::move(mesh), np.vertex_permutation(!lean).tetrahedron_permutation(
                                          !out.empty() && !arrays.cell_data.empty()));
   o.set_used_kv(tree);

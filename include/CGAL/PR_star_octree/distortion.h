@@ -189,6 +189,10 @@ Vertex_curvature vertex_curvature(const Leaf_topology<Octree>& local, const Fiel
 } // namespace internal
 
 /// \ingroup PkgPRStarOctreeRef
+/// The relations `compute_curvature()` builds in each leaf (what to size an automatic k_v for).
+constexpr unsigned compute_curvature_relations = VERTEX_LINKS | LOCAL_TETRAHEDRA;
+
+/// \ingroup PkgPRStarOctreeRef
 /// The discrete distortion and the domain curvature of every vertex, by streaming over the leaves
 /// (VT is built per leaf, then discarded), written into `curvature_map`.
 ///
@@ -246,7 +250,7 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
   // The links (checked, as `Vertex_classifier` does by default) and the leaf's tetrahedra in local
   // ids: the coordinates and the field value of each vertex are read once per leaf.
   Leaf_executor<ConcurrencyTag>().for_each(
-      tree, VERTEX_LINKS | LOCAL_TETRAHEDRA, State(),
+      tree, compute_curvature_relations, State(),
       [&](State& state, const Leaf_topology<Octree>& local) {
         const I vb = local.vertex_begin();
         const std::size_t nv = local.vertex_end() - vb;
