@@ -221,7 +221,7 @@ Result run_cgal(const Mesh& mesh, int reps) {
 Mesh prstar_order(const Mesh& mesh) {
   Octree tree(CGAL::PR_star_octree::make_input(mesh), CGAL::PR_star_octree::parameters::bucket_size(100));
   Mesh m;
-  m.points = tree.points();
+  m.points.assign(tree.points().begin(), tree.points().end());
   m.tetrahedra.assign(tree.tetrahedra().begin(), tree.tetrahedra().end());
   if (tree.has_scalar_field()) m.point_data.push_back({"scalar", tree.scalars()});
   return m;

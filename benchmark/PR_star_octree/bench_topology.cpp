@@ -858,7 +858,7 @@ int main(int argc, char** argv) {
       const Octree tree(
           PSO::make_input(*mesh),
           params::bucket_size(100).tetrahedron_permutation(false).concurrency_tag(CGAL::Sequential_tag()));
-      ordered->points = tree.points();
+      ordered->points.assign(tree.points().begin(), tree.points().end());
       ordered->tetrahedra.assign(tree.tetrahedra().begin(), tree.tetrahedra().end());
       key.resize(tree.number_of_vertices());
       ordered_field.resize(key.size());

@@ -21,6 +21,7 @@
 #include <CGAL/PR_star_octree/internal/compact_tetrahedra.h>
 #include <CGAL/PR_star_octree/internal/concept_checks.h>
 #include <CGAL/PR_star_octree/internal/leaf_tetrahedra.h>
+#include <CGAL/PR_star_octree/internal/point_range.h>
 #include <CGAL/PR_star_octree/parameters.h>
 
 #include <algorithm>
@@ -116,6 +117,10 @@ public:
   /// @}
 
   static constexpr Node_index no_node = (std::numeric_limits<Index>::max)();
+  /// whether the coordinates can be stored as floats: the traits' `Construct_point_3` makes a
+  /// `Point_3` from three `double`s
+  static constexpr bool can_store_floats =
+      PR_star_octree::internal::can_construct_point_3<Geom_traits>::value;
   /// `k_v = infinity`: a single leaf, the global baseline
   static constexpr std::size_t infinite_bucket_size = (std::numeric_limits<std::size_t>::max)();
   /// `k_v` chosen by the octree from the mesh (`CGAL::PR_star_octree::choose_bucket_size()`)
@@ -226,12 +231,28 @@ public:
 
   /// \name The mesh (new numbering)
   /// @{
-  std::size_t number_of_vertices() const { return points_.size(); }
+  std::size_t number_of_vertices() const { return points_.size() + float_points_.size(); } // (one is empty)
   std::size_t number_of_tetrahedra() const {
     return compact_ ? compact_tetrahedra_.size() : tetrahedra_.size();
   }
-  const std::vector<Point_3>& points() const { return points_; }
-  const Point_3& point(Index v) const { return points_[v]; }
+  /// the points: a random-access range of `Point_3` values (made from the stored floats when
+  /// `has_float_coordinates()`)
+  using Point_range = PR_star_octree::internal::Point_range<PR_star_octree_3>;
+  Point_range points() const { return Point_range(*this); }
+  /// point `v`, by value (made by the traits' `Construct_point_3` from the stored floats when
+  /// `has_float_coordinates()`)
+  Point_3 point(Index v) const {
+    if constexpr (can_store_floats) {
+      if (float_coordinates_) {
+        const std::array<float, 3>& f = float_points_[v];
+        return gt_.construct_point_3_object()(double(f[0]), double(f[1]), double(f[2]));
+      }
+    }
+    return points_[v];
+  }
+  /// whether the coordinates are stored as 32-bit floats (12 bytes per vertex): named parameter
+  /// `coordinate_precision`, by default when the input's coordinates are 32-bit floats
+  bool has_float_coordinates() const { return float_coordinates_; }
   /// the range of tetrahedra (random access, `Tetrahedron` values; the view refers to the octree)
   using Tetrahedra_view = PR_star_octree::internal::Tetrahedra_view<Index>;
   /// the tetrahedra: a random-access range of `Tetrahedron` values whose iterators decode
@@ -384,7 +405,9 @@ public:
   /// new -> original tetrahedron indices (empty without `has_tetrahedron_permutation()`)
   const std::vector<Index>& tetrahedron_permutation() const { return tetrahedron_to_original_; }
   /// whether tetrahedron `t` was negatively oriented as the user listed it
-  bool is_reoriented(Index t) const { return (reoriented_[t >> 6] >> (t & 63)) & 1u; }
+  bool is_reoriented(Index t) const {
+    return !reoriented_.empty() && ((reoriented_[t >> 6] >> (t & 63)) & 1u);
+  }
   /// tetrahedron `t` as the user gave it: original vertex indices, original vertex order
   std::array<Index, 4> original_tetrahedron_vertices(Index t) const {
     Tetrahedron c = tetrahedron(t);
@@ -395,7 +418,7 @@ public:
   /// original -> new vertex indices (computed, `O(|V|)`)
   std::vector<Index> vertex_from_original() const {
     if (keep_vertex_permutation_) return inverse(vertex_to_original_);
-    std::vector<Index> identity(points_.size());
+    std::vector<Index> identity(number_of_vertices());
     std::iota(identity.begin(), identity.end(), Index(0));
     return identity;
   }
@@ -439,6 +462,15 @@ private:
                                             CGAL::to_double(p.z()));
   }
 
+  // The coordinates of stored point `i` (in the order of the moment) as `double`s.
+  std::array<double, 3> stored_coordinates(std::size_t i) const {
+    if (float_coordinates_) {
+      const std::array<float, 3>& f = float_points_[i];
+      return {{double(f[0]), double(f[1]), double(f[2])}};
+    }
+    return coordinates(points_[i]);
+  }
+
   static std::vector<Index> inverse(const std::vector<Index>& perm) {
     std::vector<Index> inv(perm.size());
     for (std::size_t i = 0; i < perm.size(); ++i) inv[perm[i]] = static_cast<Index>(i);
@@ -459,6 +491,8 @@ private:
     keep_tetrahedron_permutation_ =
         choose_parameter(get_parameter(np, np_tags::tetrahedron_permutation), true);
     compact_ = choose_parameter(get_parameter(np, np_tags::compact_tetrahedra), false);
+    precision_ = choose_parameter(get_parameter(np, np_tags::coordinate_precision),
+                                  PR_star_octree::Coordinate_precision::as_input);
   }
   void check_bucket_size() const {
     if (bucket_size_ == 0)
@@ -478,6 +512,8 @@ private:
   template <class ConcurrencyTag>
   void build_in_place();
   template <class ConcurrencyTag>
+  void to_float();
+  template <class ConcurrencyTag>
   void split_vertices(std::vector<Index>& order);
   template <class ConcurrencyTag>
   void sort_and_orient_tetrahedra(const std::vector<Index>& from_original);
@@ -490,6 +526,9 @@ private:
   bool keep_vertex_permutation_ = true;
   bool keep_tetrahedron_permutation_ = true;
   bool compact_ = false;
+  PR_star_octree::Coordinate_precision precision_ = PR_star_octree::Coordinate_precision::as_input;
+  bool input_float32_ = false;     // the input said its coordinates are 32-bit floats
+  bool float_coordinates_ = false; // `float_points_` holds V, `points_` is empty
   bool automatic_ = false;
   unsigned bucket_relations_ = PR_star_octree::default_bucket_size_relations;
   PR_star_octree::Bucket_size_choice choice_;
@@ -501,7 +540,8 @@ private:
   bool has_scalar_ = false;
   std::array<double, 3> root_lo_{{0, 0, 0}}, root_hi_{{1, 1, 1}};
 
-  std::vector<Point_3> points_;
+  std::vector<Point_3> points_;                    // V, unless float_coordinates_
+  std::vector<std::array<float, 3>> float_points_; // V when float_coordinates_
   std::vector<double> scalars_;
   std::vector<int> labels_; // empty when every tetrahedron has `uniform_label_`
   int uniform_label_ = 0;

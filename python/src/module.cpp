@@ -70,6 +70,7 @@ py::dict statistics_dict(const PSO::Statistics& s) {
   d["ia_overhead_per_vertex"] = s.ia_overhead_per_vertex;
   d["ia_total_per_vertex"] = s.ia_total_per_vertex;
   d["bytes"] = s.bytes.total();
+  d["float32_coordinates"] = s.float32_coordinates;
   py::dict b;
   b["points"] = s.bytes.points;
   b["scalars"] = s.bytes.scalars;

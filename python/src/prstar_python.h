@@ -150,6 +150,8 @@ public:
   double scalar(std::size_t i) const { return field_.get(i); }
   bool has_tetrahedron_labels() const { return has_labels_; }
   int tetrahedron_label(std::size_t t) const { return labels_.get(t); }
+  /// float32 points stay 32-bit floats in the octree (`Coordinate_precision::as_input`)
+  bool has_float32_points() const { return points_.code() == 'f'; }
 
 private:
   Array_view<double> points_;

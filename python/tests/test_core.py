@@ -247,6 +247,12 @@ def test_same_results_for_every_bucket_size_thread_count_and_layout(data_dir):
     b32 = prstar.boundary((p32, tets))
     b64 = prstar.boundary((p32.astype(np.float64), tets))
     assert np.array_equal(b32.vertex_types, b64.vertex_types) and np.array_equal(b32.triangles, b64.triangles)
+    # and they stay 32-bit floats in the octree (12 bytes per vertex), unlike their float64 values
+    s32 = prstar.Octree(p32, tets, bucket_size=50).statistics()
+    s64 = prstar.Octree(p32.astype(np.float64), tets, bucket_size=50).statistics()
+    assert s32["float32_coordinates"] and not s64["float32_coordinates"]
+    assert s32["bytes_detail"]["points"] == 12 * len(p32) and s64["bytes_detail"]["points"] == 24 * len(p32)
+    assert s32["chi"] == s64["chi"] and s32["nodes"] == s64["nodes"]
 
 
 def test_labels_give_interfaces(data_dir):

@@ -228,6 +228,61 @@ for name, kwargs in (("meshio_default.vtu", {}), ("meshio_ascii.vtu", {"binary":
             check(b"vtkZLibDataCompressor" in f.read(), "meshio's default VTU is not zlib-compressed")
     compare(path, name)
 
+# --- 1d. Float32 points (issue 24): VTK's files of vtkFloatArray points are read with float32_points set and
+# exactly VTK's floats; our writers write them back as Float32 / float, which VTK reads as vtkFloatArray points
+# equal to its own ---
+pts32 = pts.astype(np.float32)
+g32 = vtk_grid()
+p32 = vtk.vtkPoints()
+p32.SetData(numpy_to_vtk(pts32, deep=True))
+g32.SetPoints(p32)
+check(g32.GetPoints().GetDataType() == vtk.VTK_FLOAT, "the Float32 grid has no float points")
+p64 = pts32.astype(np.float64)
+exp32 = dict(expected, coordinate_sum=float((p64[:, 0] + 2 * p64[:, 1] + 3 * p64[:, 2]).sum()))
+for name in ("vtk_f32_ascii.vtu", "vtk_f32_zlib_binary.vtu", "vtk_f32_appended.vtu", "vtk_f32_ascii.vtk",
+             "vtk_f32_binary.vtk"):
+    path = os.path.join(work, name)
+    if name.endswith(".vtu"):
+        w = vtk.vtkXMLUnstructuredGridWriter()
+        if "zlib" in name:
+            w.SetCompressorTypeToZLib()
+        else:
+            w.SetCompressorTypeToNone()
+        {"ascii": w.SetDataModeToAscii, "zlib": w.SetDataModeToBinary}.get(name[:-4].split("_")[2],
+                                                                           w.SetDataModeToAppended)()
+    else:
+        w = vtk.vtkUnstructuredGridWriter()
+        if "binary" in name:
+            w.SetFileTypeToBinary()
+        else:
+            w.SetFileTypeToASCII()
+    w.SetFileName(path)
+    w.SetInputData(g32)
+    check(w.Write() == 1, f"VTK could not write {name}")
+    d, err = dump(path)
+    check(d is not None and d.get("float32_points") is True, f"{name}: float32_points not set ({err})")
+    compare(path, name, exp32)
+    for out, mode in ((name.replace("vtk_", "ours_from_") + ".vtu", None),
+                      (name.replace("vtk_", "ours_from_") + "_ascii.vtu", "ascii"),
+                      (name.replace("vtk_", "ours_from_") + ".vtk", None)):
+        opath = os.path.join(work, out)
+        r = subprocess.run([tool, "--convert", path, opath] + ([mode] if mode else []), capture_output=True,
+                           text=True)
+        check(r.returncode == 0, f"{out}: our writer failed: {r.stderr.strip()}")
+        if r.returncode != 0:
+            continue
+        rd = vtk.vtkXMLUnstructuredGridReader() if out.endswith(".vtu") else vtk.vtkUnstructuredGridReader()
+        rd.SetFileName(opath)
+        rd.Update()
+        o = rd.GetOutput()
+        check(o.GetNumberOfPoints() == len(pts32) and o.GetPoints().GetDataType() == vtk.VTK_FLOAT,
+              f"{out}: VTK does not read float points")
+        if o.GetNumberOfPoints() == len(pts32):
+            check(np.array_equal(vtk_to_numpy(o.GetPoints().GetData()), pts32), f"{out}: VTK's points differ")
+        d, err = dump(opath)
+        check(d is not None and d.get("float32_points") is True, f"{out}: float32_points not set ({err})")
+print("Float32 points: VTK's files read as floats, ours written as floats")
+
 # --- 2. our writers, read back by VTK and by meshio ---
 tets_only = {
     "points": len(pts), "cells": n_tets, "temperature": float(temperature.sum()),
@@ -329,8 +384,8 @@ shared = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".
 quality_files = [source] + [os.path.join(shared, f) for f in ("bunny_sofa.vtu", "armadillo_sofa.vtu")
                             if os.path.exists(os.path.join(shared, f))]
 for original in quality_files:
-    # Through our writer first: the shared meshes are ASCII Float32, which VTK rounds to float and we
-    # read as double; written by us (Float64), both read the same coordinates.
+    # Through our writer first (as before issue 24, when we read the shared meshes' ASCII Float32
+    # coordinates as doubles and VTK rounded them): both now read the same floats either way.
     name = os.path.basename(original)
     path = os.path.join(work, "quality_" + name)
     r = subprocess.run([tool, "--convert", original, path], capture_output=True, text=True)

@@ -266,6 +266,73 @@ static void test_write_options() {
                IO::write_gmsh(msh, m, NP::format_version(3)));
 }
 
+// ------------------------------------------------------------------------------------------------
+// Float32 points (issue 24), through every record: the formats that have 32-bit coordinates write
+// them for a mesh with `float32_points` set and read them back with the flag; the others write the
+// same values as decimal doubles, read without the flag; a mesh of doubles stays one everywhere
+// ------------------------------------------------------------------------------------------------
+
+static void test_float32_points() {
+  Mesh m32 = small_mesh();
+  m32.points[1] = Mesh::Point_3(IO::internal::rounded_to_float(0.1), IO::internal::rounded_to_float(1.0 / 3),
+                                IO::internal::rounded_to_float(-2.2));
+  m32.float32_points = true;
+  const std::set<std::string> typed = {"vtu", "vtk", "meshb", "xdmf"}; // the formats of 32-bit coordinates
+  for (const auto& f : IO::mesh_formats<Mesh>) {
+    for (const bool float32 : {true, false}) {
+      for (const bool binary : {false, true}) {
+        const auto& s = *f.write_options;
+        if (!(binary ? s.binary : s.ascii)) continue;
+        if (binary && std::string(f.key) == "xdmf" && !IO::xdmf_has_hdf5()) continue;
+        prstar_test::Failure_context context(std::string(f.name) + (float32 ? ", float32" : ", doubles") +
+                                             (binary ? ", binary" : ", text"));
+        Mesh m = m32;
+        m.float32_points = float32;
+        const std::string file = (tmp / (std::string("f32.") + f.extensions[0])).string();
+        IO::write_tetrahedral_mesh(file, m, CGAL::parameters::use_binary_mode(binary));
+        Mesh r;
+        f.read_file(file, r);
+        CHECK(r.points == m.points); // exact either way
+        CHECK(r.tetrahedra == m.tetrahedra);
+        CHECK_EQUAL(r.float32_points, float32 && typed.count(f.key) == 1);
+        fs::remove(file);
+        if (std::string(f.key) == "tetgen") fs::remove(tmp / "f32.ele");
+        if (std::string(f.key) == "xdmf") fs::remove(tmp / "f32.h5");
+      }
+    }
+  }
+  // .meshb: version 1 by default for a mesh of floats, 2 for one of doubles; an explicit version wins
+  const std::string meshb = (tmp / "f32.meshb").string();
+  const auto version_written = [&] {
+    const std::string d = file_text(meshb);
+    std::int32_t head[2] = {0, 0};
+    if (d.size() >= 8) std::memcpy(head, d.data(), 8);
+    return head[1];
+  };
+  IO::write_meshb(meshb, m32);
+  CHECK_EQUAL(version_written(), 1);
+  for (int version = 1; version <= 4; ++version) {
+    IO::write_meshb(meshb, m32, NP::format_version(version));
+    CHECK_EQUAL(version_written(), version);
+    Mesh r;
+    IO::read_meshb(meshb, r);
+    CHECK(r.points == m32.points);
+    CHECK_EQUAL(r.float32_points, version == 1);
+  }
+  Mesh m64 = m32;
+  m64.float32_points = false;
+  IO::write_meshb(meshb, m64);
+  CHECK_EQUAL(version_written(), 2);
+  // text formats with a type: the shortest decimal text of each float
+  const std::string vtk = (tmp / "f32.vtk").string();
+  IO::write_vtk(vtk, m32);
+  CHECK(file_text(vtk).find("POINTS 5 float\n0 0 0\n0.1 0.33333334 -2.2\n") != std::string::npos);
+  const std::string xdmf = (tmp / "f32.xdmf").string();
+  IO::write_xdmf(xdmf, m32, CGAL::parameters::use_binary_mode(false));
+  CHECK(file_text(xdmf).find("DataType=\"Float\" Precision=\"4\" Dimensions=\"5 3\" Format=\"XML\">\n"
+                             "          0 0 0\n          0.1 0.33333334 -2.2\n") != std::string::npos);
+}
+
 int main(int argc, char** argv) {
   if (argc == 2 && std::string(argv[1]) == "--markdown") {
     for (const std::string& row : markdown_rows()) std::cout << row << "\n";
@@ -280,6 +347,7 @@ int main(int argc, char** argv) {
   test_readme(argv[1]);
   test_table();
   test_write_options();
+  test_float32_points();
   fs::remove_all(tmp);
   return prstar_test::summary("test_io_formats");
 }

@@ -430,11 +430,33 @@ static void test_round_trips() {
     Mesh r;
     IO::read_tetrahedral_mesh(f, r);
     check_same(m, r, "meshb version " + std::to_string(version), version != 1);
+    CHECK_EQUAL(r.float32_points, version == 1);
     const std::string data = read_file(f);
     std::int32_t head[2];
     std::memcpy(head, data.data(), 8);
     CHECK_EQUAL(head[0], 1);
     CHECK_EQUAL(head[1], version == 0 ? 2 : version);
+  }
+  {
+    // a mesh of floats: version 1 by default, read back with the flag and the same floats; as
+    // doubles when a version of 64-bit reals is asked
+    Mesh m32 = m;
+    for (auto& p : m32.points)
+      p = Point(IO::internal::rounded_to_float(p.x()), IO::internal::rounded_to_float(p.y()),
+                IO::internal::rounded_to_float(p.z()));
+    m32.float32_points = true;
+    for (int version : {0, 2}) {
+      const std::string f = dir + "/f32.meshb";
+      if (version == 0)
+        IO::write_tetrahedral_mesh(f, m32);
+      else
+        IO::write_meshb(f, m32, P::format_version(version));
+      Mesh r;
+      IO::read_meshb(f, r);
+      check_same(m32, r, "float32 meshb version " + std::to_string(version));
+      CHECK_EQUAL(r.float32_points, version == 0);
+      CHECK_EQUAL(read_file(f).substr(4, 1), std::string(1, char(version == 0 ? 1 : 2)));
+    }
   }
   {
     // without labels a .meshb gets reference 1 for every tetrahedron (documented)
@@ -710,6 +732,7 @@ static void test_hand_written() {
       b.i32(54);
       pos(0);
       const Mesh m = read_as(b.s, ".meshb");
+      CHECK_EQUAL(m.float32_points, version == 1); // 32-bit reals
       CHECK_EQUAL(m.points.size(), 5u);
       CHECK_EQUAL(m.tetrahedra.size(), 2u);
       CHECK((m.tetrahedron_labels == std::vector<int>{-6, 11}));

@@ -116,7 +116,7 @@ static void dump(const Mesh& m, std::ostream& out) {
     }
     out << "}";
   };
-  out << "}, \"point_data\": ";
+  out << "}, \"float32_points\": " << (m.float32_points ? "true" : "false") << ", \"point_data\": ";
   arrays(m.point_data);
   out << ", \"cell_data\": ";
   arrays(m.cell_data);
@@ -180,7 +180,7 @@ static Cells test_cells() {
   for (int z = 0; z < 2; ++z)
     for (int y = 0; y < 2; ++y)
       for (int x = 0; x < 3; ++x) {
-        c.xyz.insert(c.xyz.end(), {x * 1.5, y * 1.0, z * 0.25});
+        c.xyz.insert(c.xyz.end(), {x * 1.5, y * 1.0 + 0.1 * x, z * 0.25}); // 0.1 x: not a float
         c.height.push_back(x + 10.0 * y + 100.0 * z);
       }
   const auto id = [](int x, int y, int z) { return std::uint32_t((z * 2 + y) * 3 + x); };
@@ -235,11 +235,15 @@ static void check_test_mesh(const Mesh& m, const Cells& c, bool float32) {
   CHECK_EQUAL(m.tetrahedron_labels.size(), std::size_t(12));
   CHECK_EQUAL(m.cell_data.size(), std::size_t(1));
   if (m.cell_data.size() == 1) CHECK_EQUAL(m.cell_data[0].name, std::string("pressure"));
+  // Float32 points: the flag, and exactly the floats of the file
+  CHECK_EQUAL(m.float32_points, float32);
+  const auto expected = [&](std::size_t k) {
+    return float32 ? IO::internal::rounded_to_float(c.xyz[k]) : c.xyz[k];
+  };
   for (std::size_t i = 0; i < m.points.size() && 3 * i + 2 < c.xyz.size(); ++i) {
-    const double tol = float32 ? 1e-6 : 0;
-    CHECK_NEAR(m.points[i].x(), c.xyz[3 * i], tol);
-    CHECK_NEAR(m.points[i].y(), c.xyz[3 * i + 1], tol);
-    CHECK_NEAR(m.points[i].z(), c.xyz[3 * i + 2], tol);
+    CHECK_EQUAL(m.points[i].x(), expected(3 * i));
+    CHECK_EQUAL(m.points[i].y(), expected(3 * i + 1));
+    CHECK_EQUAL(m.points[i].z(), expected(3 * i + 2));
   }
   CHECK_EQUAL(m.point_data.size(), std::size_t(1));
   if (m.point_data.size() == 1) {
@@ -696,6 +700,7 @@ static void test_legacy() {
     Mesh r;
     IO::read_vtk(f, r);
     CHECK(r.points == m.points);
+    CHECK(!r.float32_points); // a mesh of doubles stays one
     CHECK(r.tetrahedra == m.tetrahedra);
     CHECK(r.tetrahedron_labels == m.tetrahedron_labels);
     CHECK_EQUAL(r.point_data.size(), std::size_t(1));
@@ -750,11 +755,13 @@ static void test_vtu_writer() {
     std::ifstream in(f, std::ios::binary);
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     CHECK(text.find(c.must_contain) != std::string::npos);
+    CHECK(text.find("<DataArray type=\"Float64\" Name=\"Points\"") != std::string::npos);
     // inline data only: VTK 9.1/9.2 read no appended data with Debian 12's current libexpat
     CHECK(text.find("<AppendedData") == std::string::npos);
     Mesh r;
     IO::read_vtu(f, r);
     CHECK(r.points == m.points);
+    CHECK(!r.float32_points);
     CHECK(r.tetrahedra == m.tetrahedra);
     CHECK(r.tetrahedron_labels == m.tetrahedron_labels);
     CHECK_EQUAL(r.cell_data.size(), std::size_t(1));
@@ -765,6 +772,176 @@ static void test_vtu_writer() {
       CHECK(r.point_data[0].values == m.point_data[0].values);
       if (npd == 2) CHECK(r.point_data[1].values == extra[0].values);
     }
+  }
+}
+
+// ------------------------------------------------------------------------------------------------
+// Float32 points (issue 24): read as floats with the flag set, written back as floats
+// ------------------------------------------------------------------------------------------------
+
+/// A mesh type without `float32_points`: written with doubles.
+struct Doubles_only_mesh {
+  using Point_3 = Mesh::Point_3;
+  std::vector<Point_3> points;
+  std::vector<Mesh::Tetrahedron> tetrahedra;
+  std::vector<int> tetrahedron_labels;
+  std::vector<CGAL::PR_star_octree::Data_array> point_data, cell_data;
+};
+/// A mesh type whose `float32_points` is a member function: not the flag.
+struct Function_flag_mesh : Doubles_only_mesh {
+  bool float32_points() const { return true; }
+};
+static_assert(IO::internal::has_float32_points<Mesh>::value, "the flag of Indexed_tetrahedral_mesh");
+static_assert(!IO::internal::has_float32_points<Doubles_only_mesh>::value, "no flag");
+static_assert(!IO::internal::has_float32_points<Function_flag_mesh>::value, "a function is not the flag");
+
+/// One tetrahedron whose points, as text, are `coordinates` (12 numbers) of type `type`, in ascii.
+static std::string ascii_vtu(const std::string& type, const std::string& coordinates) {
+  return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\">\n<UnstructuredGrid>\n"
+         "<Piece NumberOfPoints=\"4\" NumberOfCells=\"1\">\n<Points>\n<DataArray type=\"" +
+         type + "\" NumberOfComponents=\"3\" format=\"ascii\">" + coordinates +
+         "</DataArray>\n</Points>\n<Cells>\n"
+         "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">0 1 2 3</DataArray>\n"
+         "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">4</DataArray>\n"
+         "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10</DataArray>\n</Cells>\n</Piece>\n"
+         "</UnstructuredGrid>\n</VTKFile>\n";
+}
+
+static std::string ascii_vtk(const std::string& type, const std::string& coordinates) {
+  return "# vtk DataFile Version 4.2\nhand-made\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 " + type + "\n" +
+         coordinates + "\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n";
+}
+
+static void test_float32() {
+  const std::string tenths = "0 0 0 0.1 0 0 0 0.2 0 0 0 0.3";
+  const double f1 = double(0.1f), f2 = double(0.2f), f3 = double(0.3f);
+  // ascii: Float32 text rounded to the floats (as VTK reads it), Float64 text kept
+  for (const bool vtu : {true, false}) {
+    prstar_test::Failure_context context(vtu ? "ascii VTU Float32" : "ascii legacy VTK float");
+    Mesh m32, m64, big;
+    std::istringstream a(vtu ? ascii_vtu("Float32", tenths) : ascii_vtk("float", tenths));
+    std::istringstream b(vtu ? ascii_vtu("Float64", tenths) : ascii_vtk("double", tenths));
+    // a number beyond the float range: the file is read as doubles
+    const std::string huge = "0 0 0 1e39 0 0 0 1 0 0 0 1";
+    std::istringstream c(vtu ? ascii_vtu("Float32", huge) : ascii_vtk("float", huge));
+    if (vtu) {
+      IO::read_vtu(a, m32, "a.vtu");
+      IO::read_vtu(b, m64, "b.vtu");
+      IO::read_vtu(c, big, "c.vtu");
+    } else {
+      IO::read_vtk(a, m32, "a.vtk");
+      IO::read_vtk(b, m64, "b.vtk");
+      IO::read_vtk(c, big, "c.vtk");
+    }
+    CHECK(m32.float32_points);
+    CHECK((m32.points == std::vector<Mesh::Point_3>{{0, 0, 0}, {f1, 0, 0}, {0, f2, 0}, {0, 0, f3}}));
+    CHECK(!m64.float32_points);
+    CHECK((m64.points == std::vector<Mesh::Point_3>{{0, 0, 0}, {0.1, 0, 0}, {0, 0.2, 0}, {0, 0, 0.3}}));
+    CHECK(!big.float32_points);
+    CHECK(big.points.size() == 4 && big.points[1].x() == 1e39);
+  }
+  {
+    // vtktypefloat32 is float too
+    Mesh m;
+    std::istringstream in(ascii_vtk("vtktypefloat32", tenths));
+    IO::read_vtk(in, m, "t.vtk");
+    CHECK(m.float32_points && m.points.size() == 4 && m.points[1].x() == f1);
+  }
+  {
+    // two pieces: Float32 and Float64 points make a mesh of doubles; both Float32, of floats
+    std::string one = ascii_vtu("Float32", tenths);
+    const std::size_t b = one.find("<Piece"), e = one.find("</Piece>") + 8;
+    const std::string piece32 = one.substr(b, e - b);
+    std::string piece64 = piece32;
+    piece64.replace(piece64.find("Float32"), 7, "Float64");
+    for (const bool mixed : {true, false}) {
+      std::string text = one;
+      text.insert(e, mixed ? piece64 : piece32);
+      std::istringstream in(text);
+      Mesh m;
+      IO::read_vtu(in, m, "pieces.vtu");
+      CHECK_EQUAL(m.points.size(), std::size_t(8));
+      CHECK_EQUAL(m.float32_points, !mixed);
+      if (m.points.size() == 8) CHECK_EQUAL(m.points[5].x(), mixed ? 0.1 : f1);
+    }
+  }
+
+  // writers: a mesh with the flag set is written with 32-bit coordinates and read back the same
+  Mesh m = lattice(2);
+  CHECK_EQUAL(IO::internal::rounded_to_float(2.0 / 3), double(2.0f / 3));
+  for (auto& p : m.points) // floats that are not short decimals, and one not exact in double text
+    p = Mesh::Point_3(IO::internal::rounded_to_float(p.x() * 0.1), IO::internal::rounded_to_float(p.y() / 3),
+                      IO::internal::rounded_to_float(p.z() + 1e-3));
+  m.float32_points = true;
+  struct Case {
+    const char* name;
+    std::function<void(const std::string&)> write;
+    const char* must_contain;
+  };
+  const std::vector<Case> cases = {
+      {"f32_default.vtu", [&](const std::string& f) { IO::write_vtu(f, m); },
+       "<DataArray type=\"Float32\" Name=\"Points\" NumberOfComponents=\"3\" format=\"binary\">"},
+      {"f32_ascii.vtu",
+       [&](const std::string& f) { IO::write_vtu(f, m, {}, CGAL::parameters::use_binary_mode(false)); },
+       "<DataArray type=\"Float32\" Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">\n0 0 "
+       "0.001\n0.1 0 0.001\n"},
+      {"f32_raw.vtu",
+       [&](const std::string& f) {
+         IO::write_vtu(f, m, {}, NP::compression(IO::Compression::none).use_binary_mode(true));
+       },
+       "type=\"Float32\" Name=\"Points\""},
+      {"f32_ascii.vtk", [&](const std::string& f) { IO::write_tetrahedral_mesh(f, m); },
+       "\nPOINTS 27 float\n0 0 0.001\n0.1 0 0.001\n"},
+      {"f32_binary.vtk",
+       [&](const std::string& f) { IO::write_vtk(f, m, {}, CGAL::parameters::use_binary_mode(true)); },
+       "\nPOINTS 27 float\n"},
+      {"f32_binary_51.vtk",
+       [&](const std::string& f) { IO::write_vtk(f, m, {}, NP::format_version(5.1).use_binary_mode(true)); },
+       "\nPOINTS 27 float\n"}};
+  for (const Case& c : cases) {
+    prstar_test::Failure_context context(std::string("Float32 writer ") + c.name);
+    const std::string f = (tmp / c.name).string();
+    c.write(f);
+    std::ifstream in(f, std::ios::binary);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    CHECK_MSG(text.find(c.must_contain) != std::string::npos, "no '" << c.must_contain << "'");
+    Mesh r;
+    IO::read_tetrahedral_mesh(f, r);
+    CHECK(r.float32_points);
+    CHECK(r.points == m.points);
+    CHECK(r.tetrahedra == m.tetrahedra);
+    CHECK(r.tetrahedron_labels == m.tetrahedron_labels);
+    CHECK(r.point_data.size() == 1 && r.point_data[0].values == m.point_data[0].values);
+  }
+  {
+    // the binary legacy file holds 4-byte big-endian floats: 27 x 3 x 4 bytes after the POINTS line
+    std::ifstream in((tmp / "f32_binary.vtk").string(), std::ios::binary);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::size_t at = text.find("\nPOINTS 27 float\n") + 17;
+    CHECK(text.compare(at + 27 * 12, 7, "\nCELLS ") == 0);
+  }
+  // a coordinate beyond the float range cannot be written as a float: refused, no file
+  Mesh too_big = m;
+  too_big.points[3] = Mesh::Point_3(1e300, 0, 0);
+  const std::string refused = (tmp / "refused.vtu").string();
+  CHECK_THROWS(IO::Write_error, "beyond the range of 32-bit floats", IO::write_vtu(refused, too_big));
+  CHECK(!fs::exists(refused));
+  CHECK_THROWS(IO::Write_error, "vertex 3",
+               IO::write_tetrahedral_mesh((tmp / "refused.vtk").string(), too_big));
+  // a mesh type without the flag, or with a function of that name, writes doubles
+  for (const bool function : {false, true}) {
+    Function_flag_mesh d;
+    d.points = m.points;
+    d.tetrahedra = m.tetrahedra;
+    const std::string f = (tmp / "doubles.vtu").string();
+    if (function)
+      IO::write_vtu(f, d);
+    else
+      IO::write_vtu(f, static_cast<const Doubles_only_mesh&>(d));
+    Mesh r;
+    IO::read_vtu(f, r);
+    CHECK(!r.float32_points);
+    CHECK(r.points == m.points);
   }
 }
 
@@ -883,6 +1060,7 @@ int main(int argc, char** argv) {
   test_malformed_compressed();
   test_legacy();
   test_vtu_writer();
+  test_float32();
   test_vtu_ranges();
   fs::remove_all(tmp);
   return prstar_test::summary("test_io_vtk");

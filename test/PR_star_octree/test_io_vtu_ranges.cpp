@@ -234,6 +234,7 @@ void check_ranges(const std::string& file, const std::string& label_name,
   CHECK_MSG(r.ranges_supported(), r.reason());
   if (!r.ranges_supported()) return;
   CHECK_EQUAL(r.number_of_points(), std::uint64_t(m.points.size()));
+  CHECK_EQUAL(r.float32_points(), m.float32_points); // Float32 points, as read_vtu says
   CHECK_EQUAL(r.has_labels(), !m.tetrahedron_labels.empty());
   CHECK_EQUAL(r.label_array_name(), label_name);
   std::vector<std::string> names;
@@ -298,6 +299,7 @@ void test_hand_made() {
           const std::string file = write_file("hand_" + std::to_string(files) + ".vtu", make_vtu(g, s));
           const char* names[] = {"", "CellEntityIds", "labels", "MaterialIds"};
           try {
+            CHECK_EQUAL(Reader(file).float32_points(), !p64);
             check_ranges(file, names[s.labels], &g.tet_cells);
           } catch (const std::exception& e) {
             FAIL(file << ": " << e.what());

@@ -162,6 +162,44 @@ static std::string file_text(const std::string& f) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+/// `awkward_mesh()` with float coordinates (the values beyond the float range replaced; -0 and a
+/// subnormal float kept) and `float32_points` set.
+static Mesh float32_mesh() {
+  Mesh m = awkward_mesh();
+  m.points[1] = Mesh::Point_3(1e-30, 5e-40, 1e30);
+  for (auto& p : m.points)
+    p = Mesh::Point_3(IO::internal::rounded_to_float(p.x()), IO::internal::rounded_to_float(p.y()),
+                      IO::internal::rounded_to_float(p.z()));
+  m.float32_points = true;
+  return m;
+}
+
+static void test_float32_round_trips() {
+  const Mesh m = float32_mesh();
+  for (const bool hdf : {false, true}) {
+    if (hdf && !IO::xdmf_has_hdf5()) continue;
+    prstar_test::Failure_context c(hdf ? "float32, HDF5" : "float32, inline XML");
+    const std::string f = (tmp / (hdf ? "f32_heavy.xdmf" : "f32_inline.xdmf")).string();
+    IO::write_xdmf(f, m, CGAL::parameters::use_binary_mode(hdf));
+    const std::string text = file_text(f);
+    CHECK(
+        text.find("<Geometry GeometryType=\"XYZ\">\n        <DataItem DataType=\"Float\" Precision=\"4\"") !=
+        std::string::npos);
+    Mesh r;
+    IO::read_xdmf(f, r); // (HDF5: the flag comes from the dataset's type, float32)
+    CHECK(r.float32_points);
+    check_same(r, m);
+    // a mesh of doubles stays one
+    Mesh d = m;
+    d.float32_points = false;
+    IO::write_xdmf(f, d, CGAL::parameters::use_binary_mode(hdf));
+    CHECK(file_text(f).find("Precision=\"8\" Dimensions=\"5 3\"") != std::string::npos);
+    IO::read_xdmf(f, r);
+    CHECK(!r.float32_points);
+    check_same(r, d);
+  }
+}
+
 static void test_round_trips() {
   const Mesh m = awkward_mesh();
   // inline XML
@@ -314,9 +352,27 @@ static void test_hand_written() {
             "<Attribute Name=\"g\" Center=\"Grid\"><DataItem Dimensions=\"1\">7</DataItem></Attribute>"
             "</Grid></Domain></Xdmf>");
     CHECK_EQUAL(m.points.size(), std::size_t(5));
+    CHECK(m.float32_points); // a Float geometry of Precision 4
     CHECK((m.tetrahedra == std::vector<Mesh::Tetrahedron>{{0, 1, 2, 3}, {1, 2, 3, 4}}));
     CHECK_EQUAL(m.point_data.size(), std::size_t(1));
     CHECK(m.point_data.size() == 1 && m.point_data[0].name == "T" && m.point_data[0].values[4] == 5);
+  }
+  {
+    prstar_test::Failure_context c("inline geometry of Precision 4, 8 and none");
+    for (const char* precision : {" Precision=\"4\"", " Precision=\"8\"", ""}) {
+      const Mesh m =
+          read_text("precision.xdmf",
+                    xdmf3(std::string("<Topology TopologyType=\"Tetrahedron\"><DataItem DataType=\"Int\" "
+                                      "Format=\"XML\">0 1 2 3 1 2 3 4</DataItem></Topology>\n") +
+                          "<Geometry GeometryType=\"XYZ\"><DataItem Dimensions=\"5 3\" "
+                          "DataType=\"Float\"" +
+                          precision + " Format=\"XML\">0 0 0 0.1 0 0 0 0.2 0 0 0 0.3 1 1 1" +
+                          "</DataItem></Geometry>\n"));
+      const bool f32 = precision[0] != 0 && precision[12] == '4';
+      CHECK_EQUAL(m.float32_points, f32); // without Precision: read as doubles
+      CHECK(m.points.size() == 5 && m.points[1].x() == (f32 ? double(0.1f) : 0.1) &&
+            m.points[3].z() == (f32 ? double(0.3f) : 0.3));
+    }
   }
   {
     prstar_test::Failure_context c("DOLFINx-like: NodesPerElement, no NumberOfElements, name_to_read");
@@ -625,6 +681,7 @@ static void test_hdf5_files() {
     Mesh m;
     IO::read_xdmf(put("f32.xdmf", h5_xdmf("f32", "5 3", "2 4")), m);
     CHECK(m.points.size() == 5 && m.tetrahedra.size() == 2 && m.points[4].z() == 1.0);
+    CHECK(m.float32_points); // a float32 dataset
   }
   make("ok32", [&](hid_t f) {
     h5_dataset(f, "/g", {15}, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, g);
@@ -634,6 +691,7 @@ static void test_hdf5_files() {
     Mesh m;
     IO::read_xdmf(put("ok32.xdmf", h5_xdmf("ok32", "5 3", "8")), m);
     CHECK(m.points.size() == 5 && m.tetrahedra.size() == 2);
+    CHECK(!m.float32_points); // a float64 dataset
     // without the first '/' of the dataset path, as some writers put it
     std::string text = h5_xdmf("ok32", "5 3", "8");
     text.replace(text.find("ok32.h5:/g"), 10, "ok32.h5:g");
@@ -752,6 +810,7 @@ int main(int argc, char** argv) {
   tmp = fs::absolute(tmp);
   std::cout << "test_io_xdmf: HDF5 " << (IO::xdmf_has_hdf5() ? "yes" : "no") << "\n";
   test_round_trips();
+  test_float32_round_trips();
   test_hand_written();
   test_malformed();
 #ifdef CGAL_PR_STAR_OCTREE_USE_HDF5

@@ -251,7 +251,7 @@ void check_lean_construction(const Mesh& mesh, std::size_t kv, const std::string
                             : Tree(std::move(m), np.concurrency_tag(CGAL::Sequential_tag()));
     CHECK(!c.has_tetrahedron_permutation());
     CHECK(c.tetrahedron_permutation().empty());
-    CHECK(c.points() == a.points());
+    CHECK(std::equal(c.points().begin(), c.points().end(), a.points().begin(), a.points().end()));
     CHECK(c.scalars() == a.scalars());
     CHECK(std::equal(c.tetrahedra().begin(), c.tetrahedra().end(), a.tetrahedra().begin(),
                      a.tetrahedra().end()));
@@ -705,6 +705,102 @@ void test_other_traits() {
   check_invariants(tree, in, "Simple_cartesian, 64-bit indices");
 }
 
+// Coordinates stored as 32-bit floats (issue 24): kept as floats when the input says its coordinates
+// are floats, rounded to the nearest float when asked, the octree and the orientations being those
+// of the stored values; the same octree as with doubles when the values are floats anyway.
+struct Float_point {
+  float x_, y_, z_;
+  float x() const { return x_; }
+  float y() const { return y_; }
+  float z() const { return z_; }
+};
+
+void test_float_coordinates() {
+  using Tree = CGAL::PR_star_octree_3<>;
+  namespace params = CGAL::PR_star_octree::parameters;
+  using CGAL::PR_star_octree::Coordinate_precision;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  Mesh mesh = shuffled_lattice(12, 2); // 10,368 tetrahedra
+  for (Point& p : mesh.points)         // jittered: coordinates that are no floats
+    p = Point(p.x() + jitter(rng), p.y() + jitter(rng), p.z() + jitter(rng));
+  mesh.point_data.push_back({"f", std::vector<double>(mesh.points.size())});
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) mesh.point_data[0].values[v] = mesh.points[v].x();
+  // Rounded here, each coordinate by a cast through a volatile float: GCC 12 at -O2 drops the round
+  // trip double(float(x)) of two coordinates vectorized together.
+  const auto round = [](double x) {
+    volatile float f = static_cast<float>(x);
+    return double(f);
+  };
+  Mesh rounded = mesh;
+  for (Point& p : rounded.points) p = Point(round(p.x()), round(p.y()), round(p.z()));
+  CHECK(!(rounded.points == mesh.points));
+
+  for (std::size_t kv : {std::size_t(1), std::size_t(40)}) {
+    const std::string what = "float coordinates, k_v=" + std::to_string(kv);
+    // Doubles by default; rounded when asked: the octree of the rounded mesh, 12 bytes per vertex.
+    const Tree d(CGAL::PR_star_octree::make_input(mesh), params::bucket_size(kv));
+    CHECK(!d.has_float_coordinates());
+    const Tree f(CGAL::PR_star_octree::make_input(mesh),
+                 params::bucket_size(kv).coordinate_precision(Coordinate_precision::float32));
+    CHECK(f.has_float_coordinates());
+    check_invariants(f, CGAL::PR_star_octree::make_input(rounded), what + " (rounded)");
+    const Tree r(CGAL::PR_star_octree::make_input(rounded), params::bucket_size(kv));
+    CHECK(std::equal(f.tetrahedra().begin(), f.tetrahedra().end(), r.tetrahedra().begin(),
+                     r.tetrahedra().end()));
+    CHECK(f.vertex_permutation() == r.vertex_permutation());
+    CHECK_EQUAL(f.number_of_leaves(), r.number_of_leaves());
+    const auto fs = f.statistics(), rs = r.statistics();
+    CHECK(fs.float32_coordinates && !rs.float32_coordinates);
+    CHECK_EQUAL(fs.bytes.points, 12 * mesh.points.size());
+    CHECK_EQUAL(rs.bytes.points, sizeof(Point) * mesh.points.size());
+    CHECK_EQUAL(fs.leaf_tetrahedra_entries, rs.leaf_tetrahedra_entries);
+
+    // An input of floats stays floats (the flag of a reader, or float points), unless asked.
+    Mesh flagged = rounded;
+    flagged.float32_points = true;
+    const Tree a(CGAL::PR_star_octree::make_input(flagged), params::bucket_size(kv));
+    CHECK(a.has_float_coordinates());
+    check_invariants(a, CGAL::PR_star_octree::make_input(rounded), what + " (float input)");
+    const Tree b(CGAL::PR_star_octree::make_input(flagged),
+                 params::bucket_size(kv).coordinate_precision(Coordinate_precision::point_3));
+    CHECK(!b.has_float_coordinates());
+    Mesh moved = flagged;
+    const Tree c(std::move(moved), params::bucket_size(kv).compact_tetrahedra(true));
+    CHECK(c.has_float_coordinates() && c.is_compact());
+    check_invariants(c, CGAL::PR_star_octree::make_input(rounded), what + " (float input, moved, compact)");
+    std::vector<Float_point> fp;
+    for (const Point& p : rounded.points) fp.push_back({float(p.x()), float(p.y()), float(p.z())});
+    const Tree e(CGAL::PR_star_octree::make_input(fp, rounded.tetrahedra), params::bucket_size(kv));
+    CHECK(e.has_float_coordinates());
+    CHECK(std::equal(e.points().begin(), e.points().end(), r.points().begin(), r.points().end()));
+    CHECK(e.points().size() == r.number_of_vertices() && e.points()[5] == r.point(5));
+  }
+
+  // Rounding decides the orientation: a sliver of height 1e-50 is flat in floats (counted as
+  // degenerate, kept as given) and negative in doubles (reoriented).
+  std::vector<Point> pts = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.25, -1e-50}};
+  const std::vector<std::array<int, 4>> one = {{0, 1, 2, 3}};
+  const Tree dd(CGAL::PR_star_octree::make_input(pts, one));
+  CHECK_EQUAL(dd.statistics().reoriented_tetrahedra, std::size_t(1));
+  CHECK_EQUAL(dd.statistics().degenerate_tetrahedra, std::size_t(0));
+  const Tree ff(CGAL::PR_star_octree::make_input(pts, one),
+                params::coordinate_precision(Coordinate_precision::float32));
+  CHECK_EQUAL(ff.statistics().reoriented_tetrahedra, std::size_t(0));
+  CHECK_EQUAL(ff.statistics().degenerate_tetrahedra, std::size_t(1));
+  CHECK(!ff.is_reoriented(0) && dd.is_reoriented(0));
+  bool z_zero = false;
+  for (std::size_t v = 0; v < 4; ++v)
+    z_zero = z_zero || (ff.point(Tree::Index(v)).x() == 0.25 && ff.point(Tree::Index(v)).z() == 0.);
+  CHECK(z_zero);
+  // A coordinate beyond the floats' range is refused, not made infinite.
+  pts[1] = Point(1e300, 0, 0);
+  CHECK_THROWS(std::invalid_argument, "vertex 1 has a coordinate beyond the range of a 32-bit float",
+               (void)Tree(CGAL::PR_star_octree::make_input(pts, one),
+                          params::coordinate_precision(Coordinate_precision::float32)));
+  CHECK_EQUAL(Tree(CGAL::PR_star_octree::make_input(pts, one)).number_of_vertices(), std::size_t(4));
+}
+
 // chi and |N| fall as k_v grows (paper Table 1), on a generated mesh.
 void test_table1_behaviour(const Mesh& mesh, const std::string& what) {
   auto in = CGAL::PR_star_octree::make_input(mesh);
@@ -737,6 +833,7 @@ int main(int argc, char** argv) {
   test_compact_leaf_lists();
   test_compact_tetrahedra();
   test_automatic_bucket_size();
+  test_float_coordinates();
 
   // Generated meshes (CGAL Mesh_3 and TetGen, made by the test fixture).
   for (const char* name :

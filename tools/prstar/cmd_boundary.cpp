@@ -156,7 +156,10 @@ int run_boundary(const Options& o) {
   if (!writes) arrays = Mesh_arrays(); // or dropped when not written
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
-  const auto np = params::bucket_size(kv).maximum_depth(o.max_depth()).compact_tetrahedra(o.compact());
+  const auto np = params::bucket_size(kv)
+                      .maximum_depth(o.max_depth())
+                      .compact_tetrahedra(o.compact())
+                      .coordinate_precision(o.coordinate_precision());
   const Octree tree(std::move(mesh), np.vertex_permutation(writes).tetrahedron_permutation(
                                          !out.empty() && !arrays.cell_data.empty()));
   o.set_used_kv(tree);

@@ -174,7 +174,8 @@ int run_curvature(const Options& o) {
   const auto np = params::bucket_size(kv)
                       .bucket_size_relations(CGAL::PR_star_octree::compute_curvature_relations)
                       .maximum_depth(o.max_depth())
-                      .compact_tetrahedra(o.compact());
+                      .compact_tetrahedra(o.compact())
+                      .coordinate_precision(o.coordinate_precision());
   const Octree tree(std::move(mesh), np.vertex_permutation(!lean).tetrahedron_permutation(
                                          !out.empty() && !arrays.cell_data.empty()));
   o.set_used_kv(tree);

@@ -27,7 +27,7 @@ int run_demo(const Options& o) {
   Progress_bar progress(o.show_progress());
   report_statistics(generate_mesh(opt),
                     "built-in unit ball (CGAL Mesh_3, cell size " + fixed(opt.cell_size, 3) + ")", o.kvs(),
-                    o.max_depth(), o.compact(), o.json(), progress);
+                    o.max_depth(), o.compact(), o.coordinate_precision(), o.json(), progress);
   return exit_success;
 }
 

@@ -59,6 +59,7 @@ void statistics_json(prstar::Json& j, const CGAL::PR_star_octree::Statistics& s,
   j.field("ia_total_per_vertex", s.ia_total_per_vertex);
   j.field("bytes", s.bytes.total());
   j.field("compact_tetrahedra", s.compact_tetrahedra);
+  j.field("float32_coordinates", s.float32_coordinates);
   // the same figures per tetrahedron (the one measure of compactness, as in the benchmarks)
   const double per_tet = s.tetrahedra ? 1. / double(s.tetrahedra) : 0.;
   j.field("bytes_per_tetrahedron", s.bytes_per_tetrahedron());
@@ -127,8 +128,9 @@ void write_leaf_boxes(const std::string& out, const Octree& tree) {
 // last k_v takes the mesh over (lean construction: no second copy of V and T, no tetrahedron
 // permutation, which nothing here reports).
 void report_statistics(Mesh mesh, const std::string& name, const std::vector<std::size_t>& kvs,
-                       std::size_t max_depth, bool compact, bool json, Progress_bar& progress,
-                       const std::string& octree_out) {
+                       std::size_t max_depth, bool compact,
+                       CGAL::PR_star_octree::Coordinate_precision precision, bool json,
+                       Progress_bar& progress, const std::string& octree_out) {
   std::vector<CGAL::PR_star_octree::Statistics> stats;
   std::vector<double> seconds;
   CGAL::PR_star_octree::Simplex_counts counts;
@@ -137,6 +139,7 @@ void report_statistics(Mesh mesh, const std::string& name, const std::vector<std
     const auto np = params::bucket_size(kv)
                         .maximum_depth(max_depth)
                         .compact_tetrahedra(compact)
+                        .coordinate_precision(precision)
                         .tetrahedron_permutation(false)
                         .vertex_permutation(false);
     const bool last = stats.size() + 1 == kvs.size();
@@ -170,6 +173,8 @@ void report_statistics(Mesh mesh, const std::string& name, const std::vector<std
   std::cout << "  " << counts.edges << " edges, " << counts.triangles << " triangles ("
             << counts.boundary_triangles << " on the boundary), Euler characteristic "
             << counts.euler_characteristic() << "\n";
+  std::cout << "  stored: coordinates as " << (s0.float32_coordinates ? "32-bit floats" : "doubles")
+            << ", tetrahedra " << (s0.compact_tetrahedra ? "compact" : "as four 32-bit indices") << "\n";
   if (counts.nonmanifold_triangles)
     std::cout << "  warning: " << counts.nonmanifold_triangles
               << " triangles are shared by three or more tetrahedra\n";
@@ -236,8 +241,8 @@ namespace {
 int run_stats(const Options& o) {
   Progress_bar progress(o.show_progress());
   Mesh mesh = read_mesh(o.input(), progress);
-  report_statistics(std::move(mesh), o.input(), o.kvs(), o.max_depth(), o.compact(), o.json(), progress,
-                    o.output("--octree"));
+  report_statistics(std::move(mesh), o.input(), o.kvs(), o.max_depth(), o.compact(), o.coordinate_precision(),
+                    o.json(), progress, o.output("--octree"));
   return exit_success;
 }
 

@@ -78,6 +78,7 @@ Octree build_octree(const Options& o, Mesh&& mesh, Mesh_arrays& arrays, bool wri
                                    .bucket_size_relations(CGAL::PR_star_octree::VERTEX_TETRAHEDRA)
                                    .maximum_depth(o.max_depth())
                                    .compact_tetrahedra(o.compact())
+                                   .coordinate_precision(o.coordinate_precision())
                                    .vertex_permutation(true)
                                    .tetrahedron_permutation(write));
   o.set_used_kv(tree);

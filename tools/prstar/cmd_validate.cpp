@@ -245,7 +245,10 @@ int run_validate(const Options& o) {
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
   // Without -o the octree takes the mesh over (no second copy of V and T); with it, the mesh is kept
   // as read, to be written with the arrays `problem`.
-  const auto np = params::bucket_size(kv).maximum_depth(o.max_depth()).compact_tetrahedra(o.compact());
+  const auto np = params::bucket_size(kv)
+                      .maximum_depth(o.max_depth())
+                      .compact_tetrahedra(o.compact())
+                      .coordinate_precision(o.coordinate_precision());
   const Octree tree = out.empty()
                           ? Octree(std::move(mesh), np)
                           : Octree(CGAL::PR_star_octree::make_input(mesh.points, mesh.tetrahedra), np);

@@ -44,6 +44,10 @@ const char* const help_kv_list = "bucket thresholds k_v of the octree: positive 
 const std::string help_compact =
     "store the octree's tetrahedra compactly: about 5 bytes each instead of 16, the same results;\n"
     "each leaf decodes its tetrahedra once (see `prstar stats` for the bytes per tetrahedron)";
+const char* const help_coordinates =
+    "how the octree stores the coordinates: as the file has them (default: 32-bit floats\n"
+    "for a Float32 VTK file, a .meshb of version 1, ...), float32 (12 bytes per vertex,\n"
+    "each coordinate rounded to the nearest float) or double; predicates are exact either way";
 const std::string help_max_depth =
     "depth bound of the octree, 1 to 64 (default " + std::to_string(Octree::default_max_depth) + ")";
 const char* const help_force = "overwrite an existing output file (never the input)";
@@ -249,7 +253,7 @@ std::string Command::usage_line() const {
     for (const Declared& d : specific_)
       u += " [" + d.name + (d.value_name.empty() ? "" : " " + d.value_name) + "]";
   if (has_kv_) u += kv_list_ ? " [--kv N|inf|auto[,N...]]" : " [--kv N|inf|auto]";
-  if (has_max_depth_) u += " [--max-depth D] [--compact]";
+  if (has_max_depth_) u += " [--max-depth D] [--compact] [--coordinates input|float32|double]";
   if (!input_.empty()) u += " [--threads N] [--max-memory SIZE]";
   for (const Output_decl& o : outputs_) {
     if (o.option.empty() && output_positional_) continue; // in the synopsis
@@ -270,6 +274,7 @@ std::string Command::help() const {
   if (has_max_depth_) {
     lines.push_back({"--max-depth D", help_max_depth});
     lines.push_back({"--compact", help_compact});
+    lines.push_back({"--coordinates input|float32|double", help_coordinates});
   }
   if (!input_.empty()) {
     lines.push_back({"--threads N", help_threads});
@@ -304,6 +309,7 @@ Options Command::parse(int argc, char** argv, int first, bool distributed) const
   if (has_max_depth_) {
     values.push_back("--max-depth");
     flags.push_back("--compact");
+    values.push_back("--coordinates");
   }
   if (!input_.empty()) {
     values.push_back("--threads");
@@ -350,6 +356,18 @@ Options Command::parse(int argc, char** argv, int first, bool distributed) const
       throw Usage_error("--max-depth must be in 1..64");
     o.max_depth_ = static_cast<std::size_t>(depth);
     o.compact_ = args.flag("--compact");
+    if (args.has("--coordinates")) {
+      const std::string c = args.get("--coordinates");
+      using CGAL::PR_star_octree::Coordinate_precision;
+      if (c == "input")
+        o.precision_ = Coordinate_precision::as_input;
+      else if (c == "float32")
+        o.precision_ = Coordinate_precision::float32;
+      else if (c == "double")
+        o.precision_ = Coordinate_precision::point_3;
+      else
+        throw Usage_error("--coordinates must be input, float32 or double, not '" + c + "'");
+    }
   }
 
   // Output files: the format, never an input, never twice the same file.

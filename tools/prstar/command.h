@@ -14,6 +14,7 @@
 #include "progress.h"
 
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
+#include <CGAL/PR_star_octree/parameters.h>
 
 #include <cstddef>
 #include <functional>
@@ -64,7 +65,8 @@ public:
   Command& kv(std::string default_value = "");
   /// --kv: a comma-separated list of bucket thresholds (default: the library's default k_v).
   Command& kv_list(std::string default_value = "");
-  /// --max-depth: the depth bound of the octree, and --compact: the compact tetrahedron array.
+  /// --max-depth: the depth bound of the octree, --compact: the compact tetrahedron array, and
+  /// --coordinates: the precision of the stored coordinates.
   Command& max_depth();
   /// -o/--output (`option` empty) or another output option (e.g. "--csv"): a file written by
   /// the command.  `extension` is the one allowed extension (".vtu"), or empty for every mesh
@@ -151,6 +153,8 @@ public:
   bool used_kv_automatic() const { return used_kv_automatic_; }
   /// --compact: the octree stores its tetrahedra compactly (named parameter `compact_tetrahedra`)
   bool compact() const { return compact_; }
+  /// --coordinates: how the octree stores the coordinates (named parameter `coordinate_precision`)
+  CGAL::PR_star_octree::Coordinate_precision coordinate_precision() const { return precision_; }
   /// An output file, empty when not given: `output()` is -o/--output, `output("--csv")` another.
   std::string output(const std::string& option = "") const;
   bool force() const { return force_; }
@@ -188,6 +192,8 @@ private:
   std::size_t max_depth_ = 0, threads_ = 0, max_memory_ = 0;
   std::vector<std::pair<std::string, std::string>> outputs_;
   bool force_ = false, json_ = false, quiet_ = false, quiet_silences_summary_ = false, compact_ = false;
+  CGAL::PR_star_octree::Coordinate_precision precision_ =
+      CGAL::PR_star_octree::Coordinate_precision::as_input;
   mutable std::size_t used_kv_ = 0;
   mutable bool used_kv_automatic_ = false;
 };

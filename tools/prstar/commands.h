@@ -38,7 +38,9 @@ Command morse_command();
 /// Builds the PR-star octree of `mesh` for each k_v and prints its statistics (a table titled
 /// `name`, or JSON): shared by stats and demo (cmd_stats.cpp).
 void report_statistics(Mesh mesh, const std::string& name, const std::vector<std::size_t>& kvs,
-                       std::size_t max_depth, bool compact, bool json, Progress_bar& progress,
+                       std::size_t max_depth, bool compact,
+                       CGAL::PR_star_octree::Coordinate_precision precision, bool json,
+                       Progress_bar& progress,
                        const std::string& octree_out = ""); // `--octree`: the leaf boxes of the last k_v
 
 /// Values over a set of vertices: smallest, largest, and their exact sum (the same mean whatever

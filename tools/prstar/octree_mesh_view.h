@@ -113,6 +113,7 @@ public:
   std::vector<CGAL::PR_star_octree::Point_data_array> point_data, cell_data;
   std::map<int, std::string> label_names;
   std::map<std::string, std::size_t> skipped_cells; // none: they were reported when reading
+  bool float32_points; // the octree stores floats: the writers write 32-bit coordinates again
 
   Octree_mesh_view(const Octree& tree, Mesh_arrays&& arrays)
       : from_original_(tree.vertex_from_original()),
@@ -120,7 +121,7 @@ public:
         tetrahedra(tree.number_of_tetrahedra(), Tetrahedron_at{&tree}),
         tetrahedron_labels(tree.has_tetrahedron_labels() ? tree.number_of_tetrahedra() : 0, Label_at{&tree}),
         point_data(std::move(arrays.point_data)), cell_data(std::move(arrays.cell_data)),
-        label_names(std::move(arrays.label_names)) {
+        label_names(std::move(arrays.label_names)), float32_points(tree.has_float_coordinates()) {
     CGAL_precondition(tree.has_vertex_permutation());
     for (auto& a : cell_data) { // one array at a time into the octree's order
       if (a.values.size() != tree.number_of_tetrahedra()) continue; // refused by the writers

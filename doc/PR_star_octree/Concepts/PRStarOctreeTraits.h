@@ -37,8 +37,9 @@ public:
   /*!
   A model of `Kernel::ConstructPoint_3` with the operator
   `Point_3 operator()(double x, double y, double z)`: makes a `Point_3` from the `x()`, `y()`,
-  `z()` of an input point of another type.  Only needed when the points of the input mesh are not
-  convertible to `Point_3`.
+  `z()` of an input point of another type, or from the stored 32-bit floats.  Only needed when the
+  points of the input mesh are not convertible to `Point_3`, or to store the coordinates as floats
+  (named parameter `coordinate_precision`: without it, the octree keeps `Point_3`s).
   */
   typedef unspecified_type Construct_point_3;
 

@@ -19,6 +19,15 @@
 namespace CGAL {
 namespace PR_star_octree {
 
+namespace internal {
+// whether `P::x()` is a `float` (false for a point without `x()`, e.g. a custom traits' point)
+template <class P, class = void>
+struct has_float_x_coordinate : std::false_type {};
+template <class P>
+struct has_float_x_coordinate<P, std::void_t<decltype(std::declval<const P&>().x())>>
+    : std::is_same<std::decay_t<decltype(std::declval<const P&>().x())>, float> {};
+} // namespace internal
+
 /// \ingroup PkgPRStarOctreeRef
 /// Tag standing for "no scalar field" in `Index_arrays_input`.
 struct No_scalar_field {};
@@ -88,11 +97,18 @@ public:
     labels_ = &labels;
   }
 
+  /// whether the coordinates are 32-bit floats: `set_float32_points()`, or points whose `x()` is a
+  /// `float` (the octree then stores floats by default, see `Coordinate_precision`)
+  bool has_float32_points() const { return float32_ || internal::has_float_x_coordinate<Point_3>::value; }
+  /// says that the coordinates are 32-bit floats held in wider numbers (e.g. read from a `Float32` file)
+  void set_float32_points(bool b) { float32_ = b; }
+
 private:
   const PointRange* points_;
   const TetrahedronRange* tetrahedra_;
   const ScalarRange* scalars_;
   const std::vector<int>* labels_ = nullptr;
+  bool float32_ = false;
 };
 
 /// \ingroup PkgPRStarOctreeRef
@@ -113,7 +129,8 @@ make_input(const PointRange& points, const TetrahedronRange& tetrahedra, const S
 
 /// \ingroup PkgPRStarOctreeRef
 /// Adapts an `Indexed_tetrahedral_mesh`; its first point-data array, if any, is the scalar field,
-/// and its tetrahedron labels, if any, are the labels.
+/// its tetrahedron labels, if any, are the labels, and its `float32_points` says whether the
+/// coordinates are 32-bit floats.
 template <class P, class I>
 Index_arrays_input<std::vector<P>, std::vector<std::array<I, 4>>, std::vector<double>>
 make_input(const Indexed_tetrahedral_mesh<P, I>& mesh) {
@@ -121,6 +138,7 @@ make_input(const Indexed_tetrahedral_mesh<P, I>& mesh) {
   const Point_data_array* s = mesh.scalar_field();
   Result r = s ? Result(mesh.points, mesh.tetrahedra, s->values) : Result(mesh.points, mesh.tetrahedra);
   if (!mesh.tetrahedron_labels.empty()) r.set_tetrahedron_labels(mesh.tetrahedron_labels);
+  r.set_float32_points(mesh.float32_points);
   return r;
 }
 

@@ -48,6 +48,11 @@ struct Indexed_tetrahedral_mesh {
   using Tetrahedron = std::array<Index, 4>;
 
   std::vector<Point_3> points;
+  /// whether the file stored the coordinates as 32-bit floats (VTK `Float32`, a MEDIT `.meshb` of
+  /// version 1, an XDMF `Precision="4"`): `points` hold those values exactly, and the octree keeps
+  /// them as floats unless asked otherwise (named parameter `coordinate_precision`); writers then
+  /// write 32-bit coordinates again where the format has them
+  bool float32_points = false;
   std::vector<Tetrahedron> tetrahedra;
   /// empty, or one label per tetrahedron
   std::vector<int> tetrahedron_labels;

@@ -74,6 +74,7 @@ struct Statistics {
   double ia_total_per_vertex = 0;
 
   Memory_bytes bytes;
+  bool float32_coordinates = false; ///< the coordinates are stored as 32-bit floats (`Coordinate_precision`)
   bool compact_tetrahedra =
       false; ///< the tetrahedra are stored compactly (named parameter `compact_tetrahedra`)
   /// the bytes held per tetrahedron (`bytes.total() / tetrahedra`; 0 without tetrahedra): the one

@@ -49,9 +49,24 @@ namespace PR_star_octree {
   X(tetrahedron_permutation)                                                                                 \
   X(concurrency_tag)                                                                                         \
   X(compact_tetrahedra)                                                                                      \
+  X(coordinate_precision)                                                                                    \
   X(compression)                                                                                             \
   X(format_version)                                                                                          \
   X(communicator)
+
+/// \ingroup PkgPRStarOctreeRef
+/// How `PR_star_octree_3` stores the coordinates of the points (named parameter
+/// `coordinate_precision`).  The predicates are evaluated exactly on the stored values either way.
+enum class Coordinate_precision {
+  /// 32-bit floats when the input's coordinates are 32-bit floats
+  /// (`Indexed_tetrahedral_mesh::float32_points`, an input mesh whose `has_float32_points()` is
+  /// `true`, or points whose `x()` is a `float`); otherwise as `point_3`
+  as_input,
+  /// 32-bit floats (12 bytes per vertex): each coordinate rounded to the nearest `float`
+  float32,
+  /// the traits' `Point_3` (three `double`s with the default kernel), as given
+  point_3
+};
 
 namespace internal_np {
 // The tags of the package's own named parameters (CGAL's tags live in `CGAL::internal_np`).
@@ -85,6 +100,8 @@ CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_TAG)
 /// | `maximum_depth(std::size_t)` | the `PR_star_octree_3` constructors | 32 |
 /// | `geom_traits(gt)` (%CGAL's) | the `PR_star_octree_3` constructors, `simplify()` | `GeomTraits()` |
 /// | `vertex_permutation(bool)`, `tetrahedron_permutation(bool)` | the `PR_star_octree_3` constructors | `true` |
+/// | `compact_tetrahedra(bool)` | the `PR_star_octree_3` constructors | `false` |
+/// | `coordinate_precision(Coordinate_precision)` | the `PR_star_octree_3` constructors | `Coordinate_precision::as_input` |
 /// | `concurrency_tag(Tag)` | the `PR_star_octree_3` constructors (the algorithms take the tag as their `ConcurrencyTag` template argument) | `CGAL::Parallel_if_available_tag()` |
 /// | `check_links(bool)` | `compute_boundary()`, `Vertex_classifier` | `true` |
 /// | `with_boundary_triangles(bool)` | `compute_boundary()` | `true` |

@@ -122,6 +122,8 @@ public:
 
   std::size_t number_of_vertices() const { return static_cast<std::size_t>(grid_->GetNumberOfPoints()); }
   std::size_t number_of_tetrahedra() const { return tetrahedra_; }
+  // vtkFloatArray points stay 32-bit floats in the octree (Coordinate_precision::as_input)
+  bool has_float32_points() const { return pd_ == nullptr && pf_ != nullptr; }
   Point_3 point(std::size_t i) const {
     if (pd_ != nullptr) return Point_3(pd_[3 * i], pd_[3 * i + 1], pd_[3 * i + 2]);
     if (pf_ != nullptr) return Point_3(pf_[3 * i], pf_[3 * i + 1], pf_[3 * i + 2]);

@@ -148,6 +148,7 @@ void read_meshb_data(std::string_view data, const std::string& name, Mesh& resul
   }
   if (!has_vertices) c.fail("no Vertices keyword");
   if (!has_tetrahedra) c.fail("no Tetrahedra keyword");
+  set_float32_points(mesh, version == 1);
   for (std::size_t i = 0; i < mesh.tetrahedra.size(); ++i)
     for (const Index v : mesh.tetrahedra[i])
       if (static_cast<std::size_t>(v) >= mesh.points.size())
@@ -178,7 +179,7 @@ void read_meshb(std::istream& in, Mesh& mesh, const std::string& name = "<stream
 /// the position of the next one: `Dimension` (must be 3), `Vertices` (`x y z ref`; the vertex
 /// references are ignored), `Tetrahedra` (`a b c d ref`, 1-based; the references go to
 /// `tetrahedron_labels`), `End`.  Every other keyword is skipped through its next-keyword
-/// position.  A missing `End` is accepted.
+/// position.  A missing `End` is accepted.  Version 1 sets `mesh.float32_points`.
 ///
 /// \throws Read_error (`FILE: byte N: message`) on any problem: bad first integer, unknown version,
 /// truncated data, a count announcing more entries than the file holds (nothing is allocated for
@@ -209,10 +210,12 @@ void write_meshb_stream(std::ostream& out, const Mesh& mesh, const Write_options
   check_mesh_for_writing(mesh, name);
   const std::uint64_t nv = mesh.points.size(), nt = mesh.tetrahedra.size();
   if (version == 0) {
-    const std::uint64_t size = 100 + nv * 28 + nt * 20;
-    version = size < (std::uint64_t(1) << 31)
-                  ? 2
-                  : (nv < (std::uint64_t(1) << 31) && nt < (std::uint64_t(1) << 31) ? 3 : 4);
+    // a mesh of 32-bit coordinates: version 1 (32-bit reals) when the file stays under 2 GB
+    const std::uint64_t size = 100 + nv * 28 + nt * 20, size_1 = 100 + nv * 16 + nt * 20;
+    version = size_1 < (std::uint64_t(1) << 31) && write_float32_points(mesh, name) ? 1
+              : size < (std::uint64_t(1) << 31)                                     ? 2
+              : (nv < (std::uint64_t(1) << 31) && nt < (std::uint64_t(1) << 31))    ? 3
+                                                                                    : 4;
   }
   if (version < 1 || version > 4)
     throw Write_error(name, "unknown .meshb version " + std::to_string(version));
@@ -288,6 +291,7 @@ template <class Mesh>
 void write_meshb_file(const std::string& filename, const Mesh& mesh, const Write_options& given) {
   resolve_write_options(given, meshb_write_support, "Medit .meshb", filename);
   check_mesh_for_writing(mesh, filename);
+  if (!given.has_version) write_float32_points(mesh, filename); // its checks, before the file is created
   std::ofstream out;
   open_for_writing(out, filename);
   write_meshb_stream(out, mesh, given, filename);
@@ -310,7 +314,8 @@ void write_meshb(std::ostream& out, const Mesh& mesh,
 /// Writes `mesh` to the Medit binary file `filename`: `Dimension 3`, `Vertices` (reference 0),
 /// `Tetrahedra` (1-based, the labels as references, or 1 when the mesh has none), `End`, in the
 /// machine's byte order.  Version 1 stores the coordinates as 32-bit floats (rounded).  Point data
-/// cannot be stored and are not written.
+/// cannot be stored and are not written.  A mesh with `float32_points` set is written in version 1
+/// unless `format_version` asks for another (64-bit reals) or the file would reach 2 GB.
 /// \param filename the name of the file
 /// \param mesh the mesh
 /// \param np the write options (`Write_options.h`)
@@ -324,7 +329,8 @@ void write_meshb(std::ostream& out, const Mesh& mesh,
 ///     \cgalParamDescription{1 (32-bit reals and integers), 2 (64-bit reals), 3 (64-bit reals and
 ///       positions) or 4 (64-bit reals, integers and positions); see `read_meshb()`}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{2 when the file stays under 2 GB, else 3 when the counts fit in 32 bits, else 4}
+///     \cgalParamDefault{1 for a mesh with `float32_points` set when the file stays under 2 GB, else 2
+///       when it does, else 3 when the counts fit in 32 bits, else 4}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Write_error when the file cannot be written, the mesh is inconsistent or too large for

@@ -44,7 +44,8 @@ void read_vtk(std::istream& in, Mesh& mesh, const std::string& name = "<stream>"
 /// file the values of each section follow its keyword line as big-endian binary numbers of the
 /// type named (`int` for the 4.x `CELLS` records and for `CELL_TYPES`), whatever the machine.
 /// The tetrahedra (type 10) are kept; cells of other types are counted in `mesh.skipped_cells` by
-/// type name; a file with cells but no tetrahedron is refused.
+/// type name; a file with cells but no tetrahedron is refused.  `POINTS n float` (or
+/// `vtktypefloat32`) sets `mesh.float32_points`, ASCII values being rounded to floats as VTK does.
 ///
 /// `POINT_DATA`: every one-component `SCALARS` array (`LOOKUP_TABLE` line optional) and every
 /// one-component array of a `FIELD` becomes a point-data array, in file order (`%XX` escapes of
@@ -83,6 +84,7 @@ void write_vtk_file(const std::string& filename, const Mesh& mesh,
                     const std::vector<Data_array>& extra_point_data, const Write_options& given) {
   resolve_write_options(given, vtk_write_support, "legacy VTK", filename);
   check_named_arrays_for_writing(mesh, extra_point_data, filename);
+  write_float32_points(mesh, filename); // its checks, before the file is created
   std::ofstream out;
   open_for_writing(out, filename);
   write_vtk_options(out, mesh, extra_point_data, given, filename);
@@ -95,8 +97,9 @@ void write_vtk_file(const std::string& filename, const Mesh& mesh,
 /// Writes `mesh` to a stream as a legacy VTK file, version 4.2 (`DATASET UNSTRUCTURED_GRID`,
 /// `CELLS n 5n` of tetrahedra, `CELL_TYPES` 10), readable by VTK 5 to 9, ParaView and meshio, or
 /// version 5.1 (`CELLS n+1 4n` then `OFFSETS` and `CONNECTIVITY` arrays of `vtktypeint64`, VTK 9):
-/// points in `double`, the point-data arrays of the mesh then `extra_point_data` as `POINT_DATA`
-/// (the first one as `SCALARS`, the others in a `FIELD`, all `double`), the labels as the
+/// points in `double` (`float` when `mesh.float32_points` is set, in ASCII with the shortest text
+/// that reads back as the same float), the point-data arrays of the mesh then `extra_point_data` as
+/// `POINT_DATA` (the first one as `SCALARS`, the others in a `FIELD`, all `double`), the labels as the
 /// `CELL_DATA` `SCALARS label int`, the cell-data arrays as `double` arrays; names with blanks are
 /// `%XX`-escaped.  ASCII (shortest exact decimal form) by default, binary (big-endian; 32-bit
 /// cell indices in 4.2, 64-bit in 5.1) with `use_binary_mode(true)`.

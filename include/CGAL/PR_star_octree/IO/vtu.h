@@ -67,7 +67,8 @@ void read_vtu(std::istream& in, Mesh& mesh, const std::string& name = "<stream>"
 /// `CellData`, the first one-component array named `label`, `labels`, `subdomain`,
 /// `CellEntityIds`, `gmsh:physical`, `medit:ref` or `MaterialIds` whose values are all integers
 /// gives `tetrahedron_labels`; every other one-component array becomes a `cell_data` array (values
-/// of the tetrahedra only).
+/// of the tetrahedra only).  `Float32` points (in every piece) set `mesh.float32_points`; in ascii
+/// their values are rounded to the nearest floats, as VTK reads them.
 ///
 /// \throws Read_error on any problem (malformed XML, missing element or attribute, wrong number of
 /// values, truncated binary data, corrupt or truncated compressed block, sizes that disagree, index
@@ -91,6 +92,7 @@ void write_vtu_stream(std::ostream& out, const Mesh& mesh, const std::vector<Dat
                       const Write_options& given, const std::string& name) {
   const Write_options o = resolve_write_options(given, vtu_write_support, "VTK XML", name);
   const std::vector<const Data_array*> data = check_named_arrays_for_writing(mesh, extra_point_data, name);
+  const bool float32 = write_float32_points(mesh, name);
   const std::size_t nv = mesh.points.size(), nt = mesh.tetrahedra.size();
   std::string buf;
   Vtu_array_writer w(out, buf, name, o.binary, o.compression == Compression::zlib);
@@ -122,10 +124,15 @@ void write_vtu_stream(std::ostream& out, const Mesh& mesh, const std::vector<Dat
     buf += "      </CellData>\n";
   }
   buf += "      <Points>\n";
-  w.write<double>("Float64", "Points", 3, 3 * nv, [&](std::size_t i) {
+  const auto coordinate = [&](std::size_t i) {
     const auto& p = mesh.points[i / 3];
     return CGAL::to_double(i % 3 == 0 ? p.x() : i % 3 == 1 ? p.y() : p.z());
-  });
+  };
+  if (float32)
+    w.write<float>("Float32", "Points", 3, 3 * nv,
+                   [&](std::size_t i) { return static_cast<float>(coordinate(i)); });
+  else
+    w.write<double>("Float64", "Points", 3, 3 * nv, coordinate);
   buf += "      </Points>\n      <Cells>\n";
   w.write<std::int64_t>("Int64", "connectivity", 1, 4 * nt,
                         [&](std::size_t i) { return std::int64_t(mesh.tetrahedra[i / 4][i % 4]); });
@@ -141,6 +148,7 @@ void write_vtu_file(const std::string& filename, const Mesh& mesh,
                     const std::vector<Data_array>& extra_point_data, const Write_options& given) {
   resolve_write_options(given, vtu_write_support, "VTK XML", filename);
   check_named_arrays_for_writing(mesh, extra_point_data, filename);
+  write_float32_points(mesh, filename); // its checks, before the file is created
   std::ofstream out;
   open_for_writing(out, filename);
   write_vtu_stream(out, mesh, extra_point_data, given, filename);
@@ -151,8 +159,9 @@ void write_vtu_file(const std::string& filename, const Mesh& mesh,
 
 /// \ingroup PkgPRStarOctreeIO
 /// Writes `mesh` to a stream as a VTK XML unstructured grid (`.vtu`, version 1.0,
-/// `header_type="UInt64"`): `Float64` points, `Int64` connectivity and offsets, `UInt8` types (all
-/// 10), the point-data arrays of the mesh followed by `extra_point_data` as `Float64` `PointData`
+/// `header_type="UInt64"`): `Float64` points (`Float32` when `mesh.float32_points` is set),
+/// `Int64` connectivity and offsets, `UInt8` types (all 10), the point-data arrays of the mesh
+/// followed by `extra_point_data` as `Float64` `PointData`
 /// (the first one declared as the active scalars), the labels, when the mesh has some, as the
 /// `Int32` `CellData` array `label` (the active cell scalars), then the cell-data arrays of the
 /// mesh as `Float64` `CellData`.

@@ -61,7 +61,9 @@ inline constexpr bool xdmf_has_hdf5() {
 /// (`file.h5:/path/to/dataset`, the file relative to the `.xdmf`'s folder), `NumberType` or
 /// `DataType` `Float`, `Int`, `UInt`, `Char`, `UChar`, `Precision` 1, 2, 4, 8 and `Dimensions`.
 /// HDF5 datasets must hold float32, float64, int32, int64, uint32 or uint64 values (their own type
-/// decides, not `Precision`), of as many values as `Dimensions` announces.  Scalar `<Attribute>`s
+/// decides, not `Precision`), of as many values as `Dimensions` announces.  A geometry of float32
+/// values (an HDF5 dataset of them, or inline `Float` values of `Precision="4"`, rounded to floats)
+/// sets `mesh.float32_points`; without `Precision`, inline values are read as doubles.  Scalar `<Attribute>`s
 /// (`AttributeType="Scalar"`, the default): `Center="Node"` gives a point-data array,
 /// `Center="Cell"` a cell-data array (values of the tetrahedra only), except the first cell
 /// attribute of an integer type named `label`, `labels`, `subdomain`, `CellEntityIds`,
@@ -95,7 +97,8 @@ void read_xdmf(std::istream& in, Mesh& mesh, const std::string& name = "<stream>
 
 /// \ingroup PkgPRStarOctreeIO
 /// Writes `mesh` to the file `filename` as XDMF 3.0: one `Uniform` grid named `mesh`, a
-/// `Tetrahedron` topology (`Int`, precision 8), an `XYZ` geometry (`Float`, precision 8), the
+/// `Tetrahedron` topology (`Int`, precision 8), an `XYZ` geometry (`Float`, precision 8, or 4 with
+/// float32 values when `mesh.float32_points` is set), the
 /// point-data arrays as `Node` scalar attributes (`Float` 8), the labels, when the mesh has some, as
 /// the `Cell` attribute `label` (`Int`, precision 4), the cell-data arrays as `Cell` scalar attributes
 /// (`Float` 8).

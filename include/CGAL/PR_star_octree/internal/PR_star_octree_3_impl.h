@@ -115,6 +115,7 @@ void PR_star_octree_3<GT, I>::copy_input(const InputMesh& input) {
   check_sizes(nv, nt);
   points_.reserve(nv);
   for (std::size_t i = 0; i < nv; ++i) points_.push_back(convert_point(input.point(i)));
+  input_float32_ = PR_star_octree::internal::input_has_float32_points(input);
   if (input.has_scalar_field()) {
     has_scalar_ = true;
     scalars_.resize(nv);
@@ -148,6 +149,7 @@ template <class GT, class I>
 void PR_star_octree_3<GT, I>::take_mesh(PR_star_octree::Indexed_tetrahedral_mesh<Point_3, Index>&& mesh) {
   points_ = std::move(mesh.points);
   tetrahedra_ = std::move(mesh.tetrahedra);
+  input_float32_ = mesh.float32_points;
   mesh.points.clear();
   mesh.tetrahedra.clear();
   const std::size_t nv = points_.size(), nt = tetrahedra_.size();
@@ -193,6 +195,12 @@ void PR_star_octree_3<GT, I>::build_in_place() {
   }
 
   using PR_star_octree::internal::for_each_block;
+  if (!can_store_floats && precision_ == PR_star_octree::Coordinate_precision::float32)
+    throw std::invalid_argument("PR_star_octree_3: coordinate_precision float32 needs the traits' "
+                                "Construct_point_3 from three doubles");
+  float_coordinates_ =
+      can_store_floats && (precision_ == PR_star_octree::Coordinate_precision::float32 ||
+                           (precision_ == PR_star_octree::Coordinate_precision::as_input && input_float32_));
   // Vertex indices out of range, then repeated vertices in a tetrahedron (in the user's numbering,
   // for the message): the first tetrahedron at fault is reported, whatever the number of threads.
   {
@@ -236,6 +244,10 @@ void PR_star_octree_3<GT, I>::build_in_place() {
     }
   }
 
+  // 0. Coordinates stored as floats: converted first (nothing changes for an input of floats), so
+  // that the octree and the orientations are those of the stored values.
+  if (float_coordinates_) to_float<ConcurrencyTag>();
+
   // 1. Bounding cube (and finite coordinates), block by block: the minima and maxima do not depend on
   // the blocks, and the first vertex with a non-finite coordinate is reported.
   std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
@@ -247,7 +259,7 @@ void PR_star_octree_3<GT, I>::build_in_place() {
     for_each_block<ConcurrencyTag>(nv, 1 << 16, [&](std::size_t b, std::size_t e) {
       std::array<double, 3> l{{0, 0, 0}}, h{{0, 0, 0}};
       for (std::size_t i = b; i < e; ++i) {
-        const std::array<double, 3> c = coordinates(points_[i]);
+        const std::array<double, 3> c = stored_coordinates(i);
         if (!(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]))) {
           for (std::size_t cur = non_finite.load(); i < cur && !non_finite.compare_exchange_weak(cur, i);) {
           }
@@ -291,7 +303,10 @@ void PR_star_octree_3<GT, I>::build_in_place() {
     });
     a.swap(g);
   };
-  gather(points_);
+  if (float_coordinates_)
+    gather(float_points_);
+  else
+    gather(points_);
   if (has_scalar_) gather(scalars_);
   std::vector<Index> from_original(nv);
   for_each_block<ConcurrencyTag>(nv, 1 << 14, [&](std::size_t b, std::size_t e) {
@@ -308,9 +323,41 @@ void PR_star_octree_3<GT, I>::build_in_place() {
   set_labels_uniform_if_possible();
   build_leaf_lists<ConcurrencyTag>();
   if (compact_) {
-    compact_tetrahedra_.assign(tetrahedra_.data(), tetrahedra_.size(), points_.size());
+    compact_tetrahedra_.assign(tetrahedra_.data(), tetrahedra_.size(), number_of_vertices());
     std::vector<Tetrahedron>().swap(tetrahedra_);
   }
+}
+
+// V converted to floats, each coordinate rounded to the nearest one, in the input order, and the
+// points freed (a transient 12 bytes per vertex more than V).  The floats are stored before they
+// are read back as doubles: GCC 12 at -O2 drops the round trip `double(float(x))` when it
+// vectorizes two coordinates together.  The first vertex whose finite coordinate overflows a
+// float is reported.
+template <class GT, class I>
+template <class ConcurrencyTag>
+void PR_star_octree_3<GT, I>::to_float() {
+  constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
+  std::atomic<std::size_t> overflow{none};
+  float_points_.resize(points_.size());
+  PR_star_octree::internal::for_each_block<ConcurrencyTag>(
+      points_.size(), 1 << 14, [&](std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e; ++i) {
+          const std::array<double, 3> c = coordinates(points_[i]);
+          std::array<float, 3>& f = float_points_[i];
+          for (int a = 0; a < 3; ++a) f[a] = static_cast<float>(c[a]);
+          for (int a = 0; a < 3; ++a)
+            if (std::isfinite(c[a]) && !std::isfinite(f[a]))
+              for (std::size_t cur = overflow.load(); i < cur && !overflow.compare_exchange_weak(cur, i);) {
+              }
+        }
+      });
+  if (overflow.load() != none) {
+    std::vector<std::array<float, 3>>().swap(float_points_);
+    throw std::invalid_argument("PR_star_octree_3: vertex " + std::to_string(overflow.load()) +
+                                " has a coordinate beyond the range of a 32-bit float (coordinate_precision "
+                                "float32)");
+  }
+  std::vector<Point_3>().swap(points_);
 }
 
 template <class GT, class I>
@@ -337,7 +384,7 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
     code.resize(count);
     start.fill(0);
     for (std::size_t i = 0; i < count; ++i) {
-      const unsigned c = octant(coordinates(points_[order[b + i]]), mid);
+      const unsigned c = octant(stored_coordinates(order[b + i]), mid);
       code[i] = static_cast<unsigned char>(c);
       ++start[c + 1];
     }
@@ -394,9 +441,9 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
     }
     bool coincident = false;
     if (split) { // points that all coincide can never be separated: stop and report
-      const std::array<double, 3> p0 = coordinates(points_[order[b]]);
+      const std::array<double, 3> p0 = stored_coordinates(order[b]);
       bool all_same = true;
-      for (Index i = b + 1; i < e && all_same; ++i) all_same = (coordinates(points_[order[i]]) == p0);
+      for (Index i = b + 1; i < e && all_same; ++i) all_same = (stored_coordinates(order[i]) == p0);
       if (all_same) {
         split = false;
         coincident = true;
@@ -444,7 +491,7 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
 template <class GT, class I>
 template <class ConcurrencyTag>
 void PR_star_octree_3<GT, I>::sort_and_orient_tetrahedra(const std::vector<Index>& from_original) {
-  const std::size_t nv = points_.size();
+  const std::size_t nv = number_of_vertices();
   const std::size_t nt = tetrahedra_.size();
   using PR_star_octree::internal::for_each_block;
 
@@ -487,7 +534,7 @@ void PR_star_octree_3<GT, I>::sort_and_orient_tetrahedra(const std::vector<Index
     auto orientation = gt_.orientation_3_object();
     for (std::size_t t = b; t < e; ++t) {
       Tetrahedron& c = tetrahedra_[t];
-      const CGAL::Orientation o = orientation(points_[c[0]], points_[c[1]], points_[c[2]], points_[c[3]]);
+      const CGAL::Orientation o = orientation(point(c[0]), point(c[1]), point(c[2]), point(c[3]));
       if (o == CGAL::NEGATIVE) {
         std::swap(c[2], c[3]);
         reoriented_[t >> 6] |= std::uint64_t(1) << (t & 63);
@@ -498,12 +545,13 @@ void PR_star_octree_3<GT, I>::sort_and_orient_tetrahedra(const std::vector<Index
   for (std::uint64_t w : reoriented_)
     reoriented_count_ += static_cast<std::size_t>(std::bitset<64>(w).count());
   for (std::uint32_t d : word_degenerate) degenerate_tetrahedra_ += d;
+  if (reoriented_count_ == 0) std::vector<std::uint64_t>().swap(reoriented_); // all as given: no bits
 }
 
 template <class GT, class I>
 template <class ConcurrencyTag>
 void PR_star_octree_3<GT, I>::build_leaf_lists() {
-  const std::size_t nv = points_.size(), nt = tetrahedra_.size();
+  const std::size_t nv = number_of_vertices(), nt = tetrahedra_.size();
   const std::size_t nl = leaves_.size();
   std::vector<Index> leaf_of(nv); // position of the leaf in `leaves_`
   for (std::size_t l = 0; l < nl; ++l) {
@@ -628,7 +676,8 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
 template <class GT, class I>
 typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics() const {
   Statistics s;
-  s.vertices = points_.size();
+  s.vertices = number_of_vertices();
+  s.float32_coordinates = float_coordinates_;
   s.tetrahedra = number_of_tetrahedra();
   s.compact_tetrahedra = compact_;
   s.bucket_size = bucket_size_;
@@ -652,7 +701,7 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
   }
 
   // Unreferenced and duplicate vertices (coincident points always share a leaf).
-  std::vector<bool> referenced(points_.size(), false);
+  std::vector<bool> referenced(number_of_vertices(), false);
   for (const Tetrahedron c : tetrahedra())
     for (Index v : c) referenced[v] = true;
   s.unreferenced_vertices = static_cast<std::size_t>(std::count(referenced.begin(), referenced.end(), false));
@@ -660,7 +709,7 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
   for (Node_index n : leaves_) {
     const Node& nd = nodes_[n];
     xyz.clear();
-    for (Index v = nd.vertex_begin; v < nd.vertex_end; ++v) xyz.push_back(coordinates(points_[v]));
+    for (Index v = nd.vertex_begin; v < nd.vertex_end; ++v) xyz.push_back(coordinates(point(v)));
     std::sort(xyz.begin(), xyz.end());
     for (std::size_t i = 1; i < xyz.size(); ++i)
       if (xyz[i] == xyz[i - 1]) ++s.duplicate_vertices;
@@ -668,7 +717,8 @@ typename PR_star_octree_3<GT, I>::Statistics PR_star_octree_3<GT, I>::statistics
 
   s.compute_cost_model();
 
-  s.bytes.points = points_.capacity() * sizeof(Point_3);
+  s.bytes.points =
+      points_.capacity() * sizeof(Point_3) + float_points_.capacity() * sizeof(std::array<float, 3>);
   s.bytes.scalars = scalars_.capacity() * sizeof(double);
   s.bytes.labels = labels_.capacity() * sizeof(int);
   for (int l : labels_) ++s.subdomains[l];

@@ -52,16 +52,16 @@ public:
   }
 
   // Geometric condition, with the exact orientation predicate of the traits.
-  template <class Tets>
-  bool geometry_ok(const GeomTraits& gt, const std::vector<Point_3>& points, const Tets& tets,
+  // `points`: a random-access range of `Point_3` (a vector, or the octree's `points()`).
+  template <class Points, class Tets>
+  bool geometry_ok(const GeomTraits& gt, const Points& points, const Tets& tets,
                    const std::vector<Index>& st2, Index v1, Index v2) const {
     auto orientation = gt.orientation_3_object();
     for (Index t : st2) {
       const auto& c = tets[t];
       if (contains(c, v1)) continue; // in St(e): deleted
-      const Point_3* p[4];
-      for (int k = 0; k < 4; ++k) p[k] = &points[c[k] == v2 ? v1 : c[k]];
-      if (orientation(*p[0], *p[1], *p[2], *p[3]) != CGAL::POSITIVE) return false;
+      const auto at = [&](int k) -> decltype(auto) { return points[c[k] == v2 ? v1 : c[k]]; };
+      if (orientation(at(0), at(1), at(2), at(3)) != CGAL::POSITIVE) return false;
     }
     return true;
   }

@@ -152,6 +152,36 @@ struct has_tetrahedron_labels<
     T, void_t<decltype(bool(std::declval<const T&>().has_tetrahedron_labels())),
               decltype(int(std::declval<const T&>().tetrahedron_label(std::size_t(0))))>> : std::true_type {};
 
+// Whether the traits make a `Point_3` from three `double`s (`Construct_point_3`): needed to store
+// the coordinates as floats.
+template <class GT, class = void>
+struct can_construct_point_3 : std::false_type {};
+template <class GT>
+struct can_construct_point_3<
+    GT, void_t<decltype(std::declval<const GT&>().construct_point_3_object()(0., 0., 0.))>>
+    : std::is_convertible<decltype(std::declval<const GT&>().construct_point_3_object()(0., 0., 0.)),
+                          typename GT::Point_3> {};
+
+// Optional: `has_float32_points()`, whether the coordinates are 32-bit floats; otherwise, whether
+// the points' `x()` is a `float`.
+template <class T, class = void>
+struct has_float32_points_member : std::false_type {};
+template <class T>
+struct has_float32_points_member<T, void_t<decltype(bool(std::declval<const T&>().has_float32_points()))>>
+    : std::true_type {};
+template <class T, class = void>
+struct has_float_x : std::false_type {};
+template <class T>
+struct has_float_x<T, void_t<decltype(std::declval<const T&>().point(std::size_t(0)).x())>>
+    : std::is_same<std::decay_t<decltype(std::declval<const T&>().point(std::size_t(0)).x())>, float> {};
+template <class InputMesh>
+bool input_has_float32_points(const InputMesh& input) {
+  if constexpr (has_float32_points_member<InputMesh>::value)
+    return input.has_float32_points();
+  else
+    return has_float_x<InputMesh>::value;
+}
+
 /// Checks the concept `PRStarOctreeInputMesh` (for an octree whose points are `Point_3`).
 template <class InputMesh, class Point_3>
 struct Check_input_mesh {

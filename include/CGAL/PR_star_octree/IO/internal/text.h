@@ -11,6 +11,7 @@
 // bounded reservation, index checks and exact number formatting.
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/internal/float32_points.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 
 #include <algorithm>
@@ -510,7 +511,6 @@ private:
 // Writing
 // ---------------------------------------------------------------------------------------------
 
-/// Appends the shortest decimal representation of `v` that reads back exactly (locale-independent).
 /// Whether two of the 4 vertex indices of `t` are equal (a tetrahedron listing a vertex twice:
 /// refused by the readers, as by `PR_star_octree_3`); `repeated` is then that index.
 template <class Tetrahedron, class Int>
@@ -524,9 +524,18 @@ bool has_repeated_vertex(const Tetrahedron& t, Int& repeated) {
   return false;
 }
 
+/// Appends the shortest decimal representation of `v` that reads back exactly (locale-independent).
 inline void append_double(std::string& out, double v) {
   char buf[64];
   const std::to_chars_result r = std::to_chars(buf, buf + sizeof(buf), v);
+  out.append(buf, r.ptr);
+}
+
+/// Appends the shortest decimal representation of `v` rounded to a float that reads back exactly as
+/// that float (at most 9 significant digits; locale-independent): the text of a 32-bit coordinate.
+inline void append_float(std::string& out, double v) {
+  char buf[64];
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof(buf), static_cast<float>(v));
   out.append(buf, r.ptr);
 }
 

@@ -283,6 +283,7 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
   std::vector<double> coordinates;
   std::vector<Data_array> cell_arrays; // one-component cell data, labels among them
   std::size_t nv = 0, nc = 0;
+  bool float32_points = false; // POINTS n float (or vtktypefloat32)
   enum { NONE, POINT, CELL } attribute_mode = NONE;
   bool seen_point_data = false, seen_cell_data = false;
 
@@ -325,6 +326,7 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
         r.fail(std::to_string(nv) + " points do not fit in the index type of the mesh");
       const std::string_view type = p.expect_type("POINTS");
       p.values(p.product(nv, 3), &coordinates, "POINTS", type);
+      float32_points = iequals(type, "float") || iequals(type, "vtktypefloat32");
     } else if (key == "cells") {
       if (has_cells) r.fail("duplicate CELLS section");
       has_cells = true;
@@ -509,6 +511,10 @@ void read_vtk_text(std::string_view text, const std::string& name, Mesh& result)
   capped_reserve(mesh.points, nv, coordinates.size() * 8, 24);
   for (std::size_t i = 0; i < nv; ++i)
     mesh.points.push_back(Point_3(coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]));
+  // ASCII numbers of type float: the floats nearest to them (as VTK reads them), unless one is
+  // beyond the float range (then read as doubles)
+  if (float32_points && !p.binary) float32_points = round_points_to_float(mesh.points, 0);
+  set_float32_points(mesh, float32_points);
   mesh.tetrahedra.reserve(nc);
   std::vector<char> kept;
   const auto cell_fail = [&](const std::string& m) { throw Read_error(name, 0, m); };
@@ -574,6 +580,7 @@ template <class Mesh>
 void write_vtk_stream(std::ostream& out, const Mesh& mesh, const std::vector<Data_array>& extra_point_data,
                       bool binary, bool version_51, const std::string& name) {
   const std::vector<const Data_array*> data = check_named_arrays_for_writing(mesh, extra_point_data, name);
+  const bool float32 = write_float32_points(mesh, name);
   const std::size_t nv = mesh.points.size(), nt = mesh.tetrahedra.size();
   if (binary && !version_51 && (nt > std::size_t(0x7fffffff) / 5 || nv > std::size_t(0x7fffffff)))
     throw Write_error(name,
@@ -591,6 +598,15 @@ void write_vtk_stream(std::ostream& out, const Mesh& mesh, const std::vector<Dat
       put_be(&v, 8);
     } else {
       append_double(buf, v);
+      buf += sep;
+    }
+  };
+  const auto put_float = [&](double d, char sep) {
+    if (binary) {
+      const float v = static_cast<float>(d);
+      put_be(&v, 4);
+    } else {
+      append_float(buf, d);
       buf += sep;
     }
   };
@@ -615,11 +631,12 @@ void write_vtk_stream(std::ostream& out, const Mesh& mesh, const std::vector<Dat
   buf += binary ? "BINARY\n" : "ASCII\n";
   buf += "DATASET UNSTRUCTURED_GRID\nPOINTS ";
   append_integer(buf, nv);
-  buf += " double\n";
+  buf += float32 ? " float\n" : " double\n";
+  const auto put_coordinate = [&](double v, char sep) { float32 ? put_float(v, sep) : put_double(v, sep); };
   for (const auto& pt : mesh.points) {
-    put_double(CGAL::to_double(pt.x()), ' ');
-    put_double(CGAL::to_double(pt.y()), ' ');
-    put_double(CGAL::to_double(pt.z()), '\n');
+    put_coordinate(CGAL::to_double(pt.x()), ' ');
+    put_coordinate(CGAL::to_double(pt.y()), ' ');
+    put_coordinate(CGAL::to_double(pt.z()), '\n');
     flush_buffer(out, buf, name);
   }
   if (binary) buf += '\n';

@@ -78,6 +78,9 @@ public:
   const std::string& reason() const { return reason_; }
 
   std::uint64_t number_of_points() const { return nv_; }
+  /// whether the points are 32-bit floats (`Float32`), when `read_vtu` would set
+  /// `float32_points` (the values `read_points()` gives are then floats)
+  bool float32_points() const { return points_.kind == Kind::FLOAT && points_.size == 4; }
   std::uint64_t number_of_cells() const { return nc_; }
 
   /// the point-data arrays `read_vtu` keeps (one component, any numeric type), in file order

@@ -576,6 +576,8 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
 
   Mesh mesh;
   bool labels_everywhere = true;
+  // whether the points are 32-bit floats: every <Points> array of the pieces is Float32
+  bool any_points = false, float32_points = true;
   for (std::size_t pi = 0; pi < pieces.size(); ++pi) {
     const Xml_element& piece = *pieces[pi];
     const auto count_attribute = [&](const char* key) {
@@ -651,6 +653,15 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
         }
       } point_sink{mesh.points, {0, 0, 0}, 0, check_points};
       arrays.read_into<double>(*da[0], 3 * nv, point_sink);
+      const std::string* ptype = da[0]->attribute("type");
+      const std::string* pformat = da[0]->attribute("format");
+      bool float32 = ptype != nullptr && (*ptype == "Float32" || *ptype == "Float");
+      // decimal text typed Float32: the floats nearest to the numbers (as VTK reads them), unless a
+      // number is beyond the float range (then the piece is read as doubles)
+      if (float32 && (pformat == nullptr || *pformat == "ascii"))
+        float32 = round_points_to_float(mesh.points, vertex_offset);
+      any_points = true;
+      float32_points = float32_points && float32;
     }
 
     // cells
@@ -799,6 +810,7 @@ void read_vtu_text(std::string_view text, const std::string& name, Mesh& result)
     if (!has_labels) labels_everywhere = false;
   }
   if (!labels_everywhere) mesh.tetrahedron_labels.clear();
+  set_float32_points(mesh, any_points && float32_points);
   result = std::move(mesh);
 }
 

@@ -50,7 +50,9 @@ void vtu_write_ascii_array(std::ostream& out, std::string& buf, const std::strin
   buf += " format=\"ascii\">\n";
   const std::size_t per_line = components == 1 ? 6 : components;
   for (std::size_t i = 0; i < count; ++i) {
-    if constexpr (std::is_floating_point<T>::value) {
+    if constexpr (std::is_same<T, float>::value) {
+      append_float(buf, get(i)); // the shortest text that reads back as the same float
+    } else if constexpr (std::is_floating_point<T>::value) {
       append_double(buf, get(i));
     } else {
       append_integer(buf, get(i));

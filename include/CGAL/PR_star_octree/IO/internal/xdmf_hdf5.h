@@ -244,14 +244,16 @@ public:
   }
 
   /// Writes a dataset `path` (its groups are created) of dimensions `rows` x `columns` (`columns`
-  /// 0: one dimension) whose value `i` (row-major) is `value(i)`, as float64 (`T` = double), int32
-  /// or int64, in chunks of rows.
+  /// 0: one dimension) whose value `i` (row-major) is `value(i)`, as float64 (`T` = double), float32
+  /// (`T` = float), int32 or int64, in chunks of rows.
   template <class T, class Value>
   void write(const std::string& path, std::size_t rows, std::size_t columns, const Value& value) {
     const hid_t type = std::is_same<T, double>::value         ? H5T_IEEE_F64LE
+                       : std::is_same<T, float>::value        ? H5T_IEEE_F32LE
                        : std::is_same<T, std::int32_t>::value ? H5T_STD_I32LE
                                                               : H5T_STD_I64LE;
     const hid_t mem_type = std::is_same<T, double>::value         ? H5T_NATIVE_DOUBLE
+                           : std::is_same<T, float>::value        ? H5T_NATIVE_FLOAT
                            : std::is_same<T, std::int32_t>::value ? H5T_NATIVE_INT32
                                                                   : H5T_NATIVE_INT64;
     const int rank = columns == 0 ? 1 : 2;

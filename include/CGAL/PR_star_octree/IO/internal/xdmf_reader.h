@@ -152,6 +152,7 @@ struct Xdmf_item {
   bool has_dims = false;
   std::vector<unsigned long long> dims; ///< `Dimensions`
   Xdmf_number_kind kind = Xdmf_number_kind::FLOAT;
+  std::size_t precision = 0; ///< bytes per value: `Precision` inline (0 when absent), the dataset's for HDF
   bool hdf = false;
   std::string h5_file, dataset, reference; ///< for HDF: the file (resolved), the path, the text
   unsigned long long announced = 0;        ///< the number of values: `Dimensions`, or the dataset's
@@ -320,6 +321,11 @@ public:
           }
         }
       });
+      // 32-bit floats: an HDF5 dataset of them, or inline numbers of Precision="4" (then rounded to
+      // the nearest floats, unless one is beyond their range: read as doubles)
+      bool float32 = gitem.kind == Xdmf_number_kind::FLOAT && gitem.precision == 4;
+      if (float32 && !gitem.hdf) float32 = round_points_to_float(mesh.points, 0);
+      set_float32_points(mesh, float32);
     }
 
     // cells
@@ -513,6 +519,7 @@ private:
       const std::string_view t = trim(*p);
       if (t != "1" && t != "2" && t != "4" && t != "8")
         fail(e, std::string(what) + ": invalid Precision '" + *p + "' (1, 2, 4 or 8)");
+      r.precision = static_cast<std::size_t>(t[0] - '0');
     }
     if (const std::string* d = e.attribute("Dimensions")) {
       r.has_dims = true;
@@ -563,6 +570,7 @@ private:
     if (!xdmf_hdf5_available()) throw Read_error(name_, 0, xdmf_no_hdf5_message());
     const Xdmf_h5_info info = h5_.info(r.h5_file, r.dataset, r.reference, e.line);
     r.kind = info.kind;
+    r.precision = info.size;
     const unsigned long long n = info.count();
     if (r.has_dims && n != r.announced) {
       std::string shape;

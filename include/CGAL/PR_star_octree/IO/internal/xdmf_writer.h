@@ -61,6 +61,7 @@ void write_xdmf_file(const std::string& filename, const Mesh& mesh, const Write_
   }
   const Write_options o = resolve_write_options(g, xdmf_write_support, "XDMF", filename);
   check_named_arrays_for_writing(mesh, {}, filename);
+  const bool float32 = write_float32_points(mesh, filename);
   if (o.binary && !xdmf_hdf5_available()) throw Write_error(filename, xdmf_no_hdf5_message());
   const bool hdf = o.binary;
   const std::string h5 = h5_file.empty() ? xdmf_h5_name(filename) : h5_file;
@@ -70,13 +71,18 @@ void write_xdmf_file(const std::string& filename, const Mesh& mesh, const Write_
   const std::string h5_ref =
       h5_reference.empty() ? std::filesystem::path(h5).filename().string() : h5_reference;
   const std::size_t nv = mesh.points.size(), nt = mesh.tetrahedra.size();
+  const auto coordinate = [&](std::size_t i) {
+    const auto& p = mesh.points[i / 3];
+    return CGAL::to_double(i % 3 == 0 ? p.x() : i % 3 == 1 ? p.y() : p.z());
+  };
 
   if (hdf) {
     Xdmf_h5_writer w(h5);
-    w.template write<double>("/Mesh/geometry", nv, 3, [&](std::size_t i) {
-      const auto& p = mesh.points[i / 3];
-      return CGAL::to_double(i % 3 == 0 ? p.x() : i % 3 == 1 ? p.y() : p.z());
-    });
+    if (float32)
+      w.template write<float>("/Mesh/geometry", nv, 3,
+                              [&](std::size_t i) { return static_cast<float>(coordinate(i)); });
+    else
+      w.template write<double>("/Mesh/geometry", nv, 3, coordinate);
     w.template write<std::int64_t>(
         "/Mesh/topology", nt, 4, [&](std::size_t i) { return std::int64_t(mesh.tetrahedra[i / 4][i % 4]); });
     for (std::size_t k = 0; k < mesh.point_data.size(); ++k)
@@ -136,9 +142,11 @@ void write_xdmf_file(const std::string& filename, const Mesh& mesh, const Write_
     append_integer(b, std::int64_t(mesh.tetrahedra[i / 4][i % 4]));
   });
   buf += "      </Topology>\n      <Geometry GeometryType=\"XYZ\">\n";
-  item("Float", 8, nv, 3, "/Mesh/geometry", [&](std::string& b, std::size_t i) {
-    const auto& p = mesh.points[i / 3];
-    append_double(b, CGAL::to_double(i % 3 == 0 ? p.x() : i % 3 == 1 ? p.y() : p.z()));
+  item("Float", float32 ? 4 : 8, nv, 3, "/Mesh/geometry", [&](std::string& b, std::size_t i) {
+    if (float32)
+      append_float(b, coordinate(i)); // the shortest text that reads back as the same float
+    else
+      append_double(b, coordinate(i));
   });
   buf += "      </Geometry>\n";
   const auto attribute = [&](const std::string& name, const char* center) {

@@ -127,7 +127,7 @@ public:
     }
     if (target_reached()) stats.stop = Simplification_stop::TARGET_REACHED;
     if (stats.rounds == 0) { // nothing done: the input as the octree has it
-      out.points = tree->points();
+      out.points.assign(tree->points().begin(), tree->points().end());
       out.tetrahedra.assign(tree->tetrahedra().begin(), tree->tetrahedra().end());
       for (std::size_t v = 0; v < out.input_vertex.size(); ++v)
         out.input_vertex[v] = tree->original_vertex(static_cast<Index>(v));
@@ -182,7 +182,7 @@ public:
       if (i + 1 == settings_.remesh_iterations) stats.stop = Simplification_stop::MAX_ROUNDS;
     }
     if (stats.rounds == 0) { // no iteration asked: the input as the octree has it
-      out.points = tree->points();
+      out.points.assign(tree->points().begin(), tree->points().end());
       out.tetrahedra.assign(tree->tetrahedra().begin(), tree->tetrahedra().end());
       for (std::size_t v = 0; v < out.input_vertex.size(); ++v)
         out.input_vertex[v] = tree->original_vertex(static_cast<Index>(v));
@@ -272,8 +272,8 @@ private:
   }
 
   // A deterministic sample of edge lengths (at most ~100K) and its q-quantile.
-  template <class Tetrahedra>
-  double length_quantile(const std::vector<Point_3>& points, const Tetrahedra& tets, double q) const {
+  template <class Points, class Tetrahedra>
+  double length_quantile(const Points& points, const Tetrahedra& tets, double q) const {
     auto squared_distance = gt_.compute_squared_distance_3_object();
     std::vector<double> lengths;
     const std::size_t stride = (std::max)(std::size_t(1), tets.size() / 16384);
@@ -297,7 +297,7 @@ private:
     mesh_.constraints = &constraints_;
     classify_vertices<CGAL::Parallel_if_available_tag>(
         tree, false, mesh_.types, [](Index, int) {}, parameters::default_values());
-    mesh_.pos = tree.points();
+    mesh_.pos.assign(tree.points().begin(), tree.points().end());
     const std::size_t nv = mesh_.pos.size(), nt = tree.number_of_tetrahedra();
     mesh_.posd.resize(nv);
     mesh_.sid.resize(nv);
