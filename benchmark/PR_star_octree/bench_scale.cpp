@@ -3,7 +3,8 @@
 //
 // bench_scale: the PR-star octree from 1M to 100M tetrahedra (issue 10, item 7).
 //
-// usage: bench_scale [--cells 55,120,203,260] [--threads 1,2] [--kv auto|K] [--cgal-max T] [--keep] DIR
+// usage: bench_scale [--cells 55,120,203,260] [--threads 1,2] [--kv auto|K] [--storage S,...] [--cgal-max T]
+//                    [--keep] DIR
 //   For each N of --cells, makes DIR/lattice_N.vtu with `prstar generate --shape lattice --cells N`
 //   (a jittered Kuhn lattice, 6 N^3 tetrahedra, a scalar field, raw binary VTU; kept if present).
 //   Then, for each thread count, three forked children each read the file and build the octree in
@@ -13,7 +14,10 @@
 //   (compute_curvature of the scalar field: discrete distortion), stats (statistics() and
 //   count_simplices).  Reported per child: read, build and application seconds, its peak RSS, and
 //   the structure's bytes (B/tet as prstar stats reports it, with its breakdown; peak RSS / structure);
-//   per size, the speed-up of 2 threads over 1.
+//   per size, the speed-up of 2 threads over 1.  --storage lists how the octree stores the mesh, one
+//   set of rows each (default plain): plain (four 32-bit indices per tetrahedron, the file's
+//   coordinates: doubles here), compact (`compact_tetrahedra`), float32 (`coordinate_precision`
+//   float32) or compact+float32.
 //   The children with more threads must give the same counts (checked, "MISMATCH" otherwise).
 //   CGAL's Triangulation_3 (the baseline of bench_relations) is built on the meshes of at most
 //   --cgal-max tetrahedra (default 11M): build seconds, bytes, peak RSS, B/tet; the number of
@@ -89,7 +93,22 @@ struct Curvature_arrays {
   };
 };
 
-Result run(const std::string& file, std::size_t kv, std::size_t threads, Application app) {
+struct Storage {
+  std::string name;
+  bool compact, float32;
+};
+
+Storage parse_storage(const std::string& s) {
+  if (s == "plain") return {s, false, false};
+  if (s == "compact") return {s, true, false};
+  if (s == "float32") return {s, false, true};
+  if (s == "compact+float32") return {s, true, true};
+  throw std::invalid_argument(
+      "bench_scale: --storage takes plain, compact, float32 or compact+float32, not '" + s + "'");
+}
+
+Result run(const std::string& file, std::size_t kv, std::size_t threads, Application app,
+           const Storage& storage) {
 #ifdef CGAL_LINKED_WITH_TBB
   tbb::global_control control(tbb::global_control::max_allowed_parallelism, threads);
 #else
@@ -105,10 +124,15 @@ Result run(const std::string& file, std::size_t kv, std::size_t threads, Applica
   // the default (links, triangles) for boundary and stats
   const unsigned relations = app == CURVATURE ? CGAL::PR_star_octree::compute_curvature_relations
                                               : CGAL::PR_star_octree::default_bucket_size_relations;
-  const Octree tree(std::move(mesh), params::bucket_size(kv)
-                                         .bucket_size_relations(relations)
-                                         .vertex_permutation(false)
-                                         .tetrahedron_permutation(false));
+  const Octree tree(std::move(mesh),
+                    params::bucket_size(kv)
+                        .bucket_size_relations(relations)
+                        .vertex_permutation(false)
+                        .tetrahedron_permutation(false)
+                        .compact_tetrahedra(storage.compact)
+                        .coordinate_precision(storage.float32
+                                                  ? CGAL::PR_star_octree::Coordinate_precision::float32
+                                                  : CGAL::PR_star_octree::Coordinate_precision::as_input));
   r.build_s = now() - t0;
   r.vertices = tree.number_of_vertices();
   r.tetrahedra = tree.number_of_tetrahedra();
@@ -179,10 +203,13 @@ std::size_t mem_total_bytes() {
 } // namespace
 
 int main(int argc, char** argv) {
+  const char* const usage = "usage: bench_scale [--cells N,...] [--threads T,...] [--kv auto|K] [--storage "
+                            "plain|compact|float32|compact+float32,...] [--cgal-max T] [--keep] DIR\n";
   std::vector<std::size_t> cells{55, 120, 203, 260}, threads{1, 2};
   std::size_t kv = prstar_bench::automatic_kv, cgal_max = 11000000;
   bool keep = false;
   std::string dir;
+  std::vector<Storage> storages{parse_storage("plain")};
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--cells" && i + 1 < argc)
@@ -191,31 +218,34 @@ int main(int argc, char** argv) {
       threads = parse_list(argv[++i]);
     else if (a == "--kv" && i + 1 < argc)
       kv = prstar_bench::parse_kv_list(argv[++i]).front();
-    else if (a == "--cgal-max" && i + 1 < argc)
+    else if (a == "--storage" && i + 1 < argc) {
+      storages.clear();
+      std::stringstream list(argv[++i]);
+      for (std::string item; std::getline(list, item, ',');) storages.push_back(parse_storage(item));
+    } else if (a == "--cgal-max" && i + 1 < argc)
       cgal_max = std::stoull(argv[++i]);
     else if (a == "--keep")
       keep = true;
     else if (!a.empty() && a[0] != '-' && dir.empty())
       dir = a;
     else {
-      std::cerr << "usage: bench_scale [--cells N,...] [--threads T,...] [--kv auto|K] [--cgal-max T] "
-                   "[--keep] DIR\n";
+      std::cerr << usage;
       return 2;
     }
   }
   if (dir.empty()) {
-    std::cerr
-        << "usage: bench_scale [--cells N,...] [--threads T,...] [--kv auto|K] [--cgal-max T] [--keep] DIR\n";
+    std::cerr << usage;
     return 2;
   }
   fs::create_directories(dir);
   const std::size_t ram = mem_total_bytes();
 
-  std::cout << "| tetrahedra | threads | application | k_v | read s | build s | application s | total s | "
+  std::cout << "| tetrahedra | threads | application | storage | k_v | read s | build s | application s | "
+               "total s | "
                "peak RSS MB | "
                "structure MB | B/tet | B/tet breakdown | peak / structure | speed-up build | speed-up "
                "application |\n"
-               "|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|\n";
+               "|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|\n";
   std::vector<std::string> cgal_rows;
   double octree_peak_per_tet = 0;
   for (std::size_t n : cells) {
@@ -228,35 +258,37 @@ int main(int argc, char** argv) {
         return 1;
       }
     }
-    for (Application app : {BOUNDARY, CURVATURE, STATS}) {
-      Result first{};
-      for (std::size_t t : threads) {
-        const Result r = in_child<Result>([&] { return run(file, kv, t, app); });
-        if (!r.ok) {
-          std::cout << "| " << 6 * n * n * n << " | " << t << " | " << application_name[app]
-                    << " | failed |\n";
-          continue;
+    for (Application app : {BOUNDARY, CURVATURE, STATS})
+      for (const Storage& storage : storages) {
+        Result first{};
+        for (std::size_t t : threads) {
+          const Result r = in_child<Result>([&] { return run(file, kv, t, app, storage); });
+          if (!r.ok) {
+            std::cout << "| " << 6 * n * n * n << " | " << t << " | " << application_name[app] << " | "
+                      << storage.name << " | failed |\n";
+            continue;
+          }
+          const bool same =
+              t == threads.front() || (r.check[0] == first.check[0] && r.check[1] == first.check[1] &&
+                                       r.check[2] == first.check[2] && r.value == first.value);
+          if (t == threads.front()) first = r;
+          if (n == cells.back()) // the largest mesh: fixed costs (threads, buffers) matter least
+            octree_peak_per_tet =
+                std::max(octree_peak_per_tet, double(r.peak_rss_bytes) / double(r.tetrahedra));
+          std::cout << "| " << r.tetrahedra << " | " << t << " | " << application_name[app]
+                    << (same ? "" : " MISMATCH") << " | " << storage.name << " | "
+                    << (kv == prstar_bench::automatic_kv ? "auto " : "") + std::to_string(r.kv) << " | "
+                    << fixed(r.read_s, 2) << " | " << fixed(r.build_s, 2) << " | "
+                    << fixed(r.application_s, 2) << " | " << fixed(r.read_s + r.build_s + r.application_s, 2)
+                    << " | " << mb(r.peak_rss_bytes) << " | " << mb(r.structure_bytes) << " | "
+                    << fixed(double(r.structure_bytes) / double(r.tetrahedra), 1) << " | "
+                    << r.bpt.breakdown() << " | "
+                    << fixed(double(r.peak_rss_bytes) / double(r.structure_bytes), 2) << " | "
+                    << (t == threads.front() ? "" : fixed(first.build_s / r.build_s, 2)) << " | "
+                    << (t == threads.front() ? "" : fixed(first.application_s / r.application_s, 2)) << " |"
+                    << std::endl;
         }
-        const bool same =
-            t == threads.front() || (r.check[0] == first.check[0] && r.check[1] == first.check[1] &&
-                                     r.check[2] == first.check[2] && r.value == first.value);
-        if (t == threads.front()) first = r;
-        if (n == cells.back()) // the largest mesh: fixed costs (threads, buffers) matter least
-          octree_peak_per_tet =
-              std::max(octree_peak_per_tet, double(r.peak_rss_bytes) / double(r.tetrahedra));
-        std::cout << "| " << r.tetrahedra << " | " << t << " | " << application_name[app]
-                  << (same ? "" : " MISMATCH") << " | "
-                  << (kv == prstar_bench::automatic_kv ? "auto " : "") + std::to_string(r.kv) << " | "
-                  << fixed(r.read_s, 2) << " | " << fixed(r.build_s, 2) << " | " << fixed(r.application_s, 2)
-                  << " | " << fixed(r.read_s + r.build_s + r.application_s, 2) << " | "
-                  << mb(r.peak_rss_bytes) << " | " << mb(r.structure_bytes) << " | "
-                  << fixed(double(r.structure_bytes) / double(r.tetrahedra), 1) << " | " << r.bpt.breakdown()
-                  << " | " << fixed(double(r.peak_rss_bytes) / double(r.structure_bytes), 2) << " | "
-                  << (t == threads.front() ? "" : fixed(first.build_s / r.build_s, 2)) << " | "
-                  << (t == threads.front() ? "" : fixed(first.application_s / r.application_s, 2)) << " |"
-                  << std::endl;
       }
-    }
     if (6 * n * n * n <= cgal_max) {
       const Cgal_result c = in_child<Cgal_result>([&] {
         Mesh mesh;

@@ -123,7 +123,8 @@ public:
   }
   std::size_t number_of_vertices() const { return tree_.number_of_vertices(); }
   std::size_t number_of_tetrahedra() const { return tree_.number_of_tetrahedra(); }
-  const Point_3& point(std::size_t i) const { return tree_.point(vertex_[i]); }
+  Point_3 point(std::size_t i) const { return tree_.point(vertex_[i]); }
+  bool has_float32_points() const { return tree_.has_float_coordinates(); }
   std::array<Index, 4> tetrahedron(std::size_t t) const {
     return tree_.original_tetrahedron_vertices(tetrahedron_[t]);
   }

@@ -57,7 +57,8 @@ public:
   std::size_t number_of_vertices() const { return static_cast<std::size_t>(std::size(*points_)); }
   std::size_t number_of_tetrahedra() const { return static_cast<std::size_t>(std::size(*tetrahedra_)); }
 
-  const Point_3& point(std::size_t i) const { return std::begin(*points_)[i]; }
+  /// point `i` (a reference into the range, or a value for a range of values)
+  decltype(auto) point(std::size_t i) const { return std::begin(*points_)[i]; }
 
   /// the four vertex indices of tetrahedron `t`, in the element type of the range (a negative
   /// index stays negative, so that the octree reports it as such)

@@ -21,6 +21,8 @@
 //   tetrahedron `t` is found by skipping at most `block_size - 1` records.
 // A cursor decodes consecutive tetrahedra in one pass.
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -58,32 +60,30 @@ public:
   Compact_tetrahedra() { make_record_lengths(); }
 
   // Encodes `nt` tetrahedra of vertices in `[0, nv)`, sorted by smallest vertex (non-decreasing),
-  // each with four distinct vertices.
+  // each with four distinct vertices.  Two passes over `T`: the first checks it, counts and sizes
+  // the records, the second writes them into bytes allocated once at their exact size (a growing
+  // array would hold up to three times the final bytes at its last reallocation).
   // \throws std::invalid_argument otherwise
   void assign(const Tetrahedron* T, std::size_t nt, std::size_t nv) {
     size_ = nt;
-    bytes_.clear();
+    std::vector<unsigned char>().swap(bytes_);
     blocks_.clear();
     big_counts_.clear();
     counts_.assign(nv, 0);
     std::vector<std::pair<Index, std::size_t>> big; // vertices owning 255 or more tetrahedra
     Index current = 0;
-    std::size_t rank = 0;
-    bytes_.reserve(nt * 5 + 8);
+    std::size_t rank = 0, total = 0;
     blocks_.reserve(nt / block_size + 1);
     for (std::size_t t = 0; t < nt; ++t) {
       const Tetrahedron& c = T[t];
-      int p = 0;
-      for (int k = 1; k < 4; ++k)
-        if (c[k] < c[p]) p = k;
-      const Index m = c[p];
+      const Index m = (std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3]));
       if (m >= nv || (t > 0 && m < current))
         throw std::invalid_argument("Compact_tetrahedra: the tetrahedra are not sorted by smallest vertex");
       if (t == 0 || m != current) {
         current = m;
         rank = 0;
       }
-      if (t % block_size == 0) blocks_.push_back(Block{bytes_.size(), m, static_cast<Index>(rank)});
+      if (t % block_size == 0) blocks_.push_back(Block{total, m, static_cast<Index>(rank)});
       ++rank;
       if (counts_[m] < 255) {
         if (++counts_[m] == 255) big.emplace_back(m, 255);
@@ -91,25 +91,23 @@ public:
         ++big.back().second;
       if (c[0] == c[1] || c[0] == c[2] || c[0] == c[3] || c[1] == c[2] || c[1] == c[3] || c[2] == c[3])
         throw std::invalid_argument("Compact_tetrahedra: a tetrahedron with a repeated vertex");
+      if ((std::max)((std::max)(c[0], c[1]), (std::max)(c[2], c[3])) >= nv)
+        throw std::invalid_argument("Compact_tetrahedra: a tetrahedron with an out-of-range vertex");
       std::uint64_t d[3];
-      unsigned control = static_cast<unsigned>(p);
-      for (int k = 0; k < 3; ++k) {
-        const Index x = c[(p + 1 + k) & 3];
-        if (x >= nv)
-          throw std::invalid_argument("Compact_tetrahedra: a tetrahedron with an out-of-range vertex");
-        d[k] = static_cast<std::uint64_t>(x - m - 1);
-        unsigned code = 0;
-        while (code < 3 && (d[k] >> (8 * length_of(code))) != 0) ++code;
-        control |= code << (2 + 2 * k);
-      }
-      bytes_.push_back(static_cast<unsigned char>(control));
+      total += record_length_[encode(c, d)];
+    }
+    bytes_.resize(total + 8, 0); // 8 bytes of padding: a difference is always read as one 8-byte load
+    unsigned char* out = bytes_.data();
+    for (std::size_t t = 0; t < nt; ++t) {
+      std::uint64_t d[3];
+      const unsigned control = encode(T[t], d);
+      *out++ = static_cast<unsigned char>(control);
       for (int k = 0; k < 3; ++k) {
         const unsigned len = length_of((control >> (2 + 2 * k)) & 3u);
-        for (unsigned b = 0; b < len; ++b) bytes_.push_back(static_cast<unsigned char>(d[k] >> (8 * b)));
+        for (unsigned b = 0; b < len; ++b) *out++ = static_cast<unsigned char>(d[k] >> (8 * b));
       }
     }
-    bytes_.resize(bytes_.size() + 8, 0); // so that a difference is always read as one 8-byte load
-    bytes_.shrink_to_fit();
+    CGAL_assertion(static_cast<std::size_t>(out - bytes_.data()) == total);
     blocks_.shrink_to_fit();
     big_counts_.reserve(big.size());
     for (const auto& b : big) big_counts_.emplace_back(b.first, static_cast<Index>(b.second));
@@ -239,6 +237,22 @@ public:
   }
 
 private:
+  // The control byte of tetrahedron `c` (the position of its smallest vertex, the byte-length code
+  // of each difference) and the three differences to its smallest vertex, in `d`.
+  static unsigned encode(const Tetrahedron& c, std::uint64_t (&d)[3]) {
+    int p = 0;
+    for (int k = 1; k < 4; ++k)
+      if (c[k] < c[p]) p = k;
+    unsigned control = static_cast<unsigned>(p);
+    for (int k = 0; k < 3; ++k) {
+      d[k] = static_cast<std::uint64_t>(c[(p + 1 + k) & 3] - c[p] - 1);
+      unsigned code = 0;
+      while (code < 3 && (d[k] >> (8 * length_of(code))) != 0) ++code;
+      control |= code << (2 + 2 * k);
+    }
+    return control;
+  }
+
   void make_record_lengths() {
     for (unsigned control = 0; control < 256; ++control) {
       unsigned n = 1;
