@@ -194,13 +194,15 @@ void read_meshb(const std::string& filename, Mesh& mesh) {
 namespace internal {
 
 /// What the Medit binary writer accepts: binary, versions 1 to 4 (by default the smallest that fits).
-inline constexpr Write_support meshb_write_support{false,
-                                                   true,
-                                                   true,
-                                                   false,
-                                                   false,
-                                                   {"1", "2", "3", "4"},
-                                                   "2 when the file stays under 2 GB, else 3, else 4"};
+inline constexpr Write_support meshb_write_support{
+    false,
+    true,
+    true,
+    false,
+    false,
+    {"1", "2", "3", "4"},
+    "1 for 32-bit coordinates (`float32_points`) and 2 otherwise when the file stays "
+    "under 2 GB, else 3, else 4"};
 
 template <class Mesh>
 void write_meshb_stream(std::ostream& out, const Mesh& mesh, const Write_options& given,
