@@ -7,6 +7,7 @@
 #define CGAL_PR_STAR_OCTREE_INDEX_ARRAYS_INPUT_H
 
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
+#include <CGAL/PR_star_octree/internal/concept_checks.h>
 
 #include <array>
 #include <stdexcept>
@@ -18,15 +19,6 @@
 
 namespace CGAL {
 namespace PR_star_octree {
-
-namespace internal {
-// whether `P::x()` is a `float` (false for a point without `x()`, e.g. a custom traits' point)
-template <class P, class = void>
-struct has_float_x_coordinate : std::false_type {};
-template <class P>
-struct has_float_x_coordinate<P, std::void_t<decltype(std::declval<const P&>().x())>>
-    : std::is_same<std::decay_t<decltype(std::declval<const P&>().x())>, float> {};
-} // namespace internal
 
 /// \ingroup PkgPRStarOctreeRef
 /// Tag standing for "no scalar field" in `Index_arrays_input`.

@@ -169,17 +169,18 @@ struct has_float32_points_member : std::false_type {};
 template <class T>
 struct has_float32_points_member<T, void_t<decltype(bool(std::declval<const T&>().has_float32_points()))>>
     : std::true_type {};
-template <class T, class = void>
-struct has_float_x : std::false_type {};
-template <class T>
-struct has_float_x<T, void_t<decltype(std::declval<const T&>().point(std::size_t(0)).x())>>
-    : std::is_same<std::decay_t<decltype(std::declval<const T&>().point(std::size_t(0)).x())>, float> {};
+// whether `P::x()` is a `float` (false for a point without `x()`, e.g. a custom traits' point)
+template <class P, class = void>
+struct has_float_x_coordinate : std::false_type {};
+template <class P>
+struct has_float_x_coordinate<P, void_t<decltype(std::declval<const P&>().x())>>
+    : std::is_same<std::decay_t<decltype(std::declval<const P&>().x())>, float> {};
 template <class InputMesh>
 bool input_has_float32_points(const InputMesh& input) {
   if constexpr (has_float32_points_member<InputMesh>::value)
     return input.has_float32_points();
   else
-    return has_float_x<InputMesh>::value;
+    return has_float_x_coordinate<std::decay_t<decltype(input.point(std::size_t(0)))>>::value;
 }
 
 /// Checks the concept `PRStarOctreeInputMesh` (for an octree whose points are `Point_3`).
