@@ -360,8 +360,8 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
   const std::size_t nv = points_.size();
   compact_ = true;
   keep_tetrahedron_permutation_ = false;
-  // Pass 1 is needed for |T|; the k_v is chosen from it, so V is split after it, in the user's
-  // numbering: the counts by smallest vertex are taken after the split, from a second look at V.
+  // Pass 1: the tetrahedra checked (in the user's numbering, for the messages) and counted: the
+  // automatic k_v needs |T| before V is split.
   std::size_t nt = 0;
   has_labels_ = false;
   source.for_each_chunk([&](const std::uint64_t* v, const int* labels, std::size_t n) {
