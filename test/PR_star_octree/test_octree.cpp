@@ -813,7 +813,8 @@ void test_streaming_construction() {
   using Source = CGAL::PR_star_octree::Tetrahedron_range_source<Tets>;
   Mesh mesh = shuffled_lattice(14, 8); // 16,464 tetrahedra
   std::mt19937 rng(2);
-  for (std::size_t t = 0; t < mesh.tetrahedra.size(); t += 3) std::swap(mesh.tetrahedra[t][0], mesh.tetrahedra[t][1]);
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); t += 3)
+    std::swap(mesh.tetrahedra[t][0], mesh.tetrahedra[t][1]);
   for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) mesh.tetrahedron_labels.push_back(int(rng() % 3));
   mesh.point_data.push_back({"f", std::vector<double>(mesh.points.size())});
   for (std::size_t v = 0; v < mesh.points.size(); ++v) mesh.point_data[0].values[v] = mesh.points[v].y() * 3;
@@ -879,9 +880,7 @@ void test_streaming_construction() {
         same_leaves = same_leaves && la == lb;
       }
       for (std::size_t t = 0; t < b.number_of_tetrahedra(); ++t) {
-        const auto back = b.original_tetrahedron_vertices(Tree::Index(t));
-        std::array<std::uint32_t, 4> orig{{b.original_vertex(back[0]), b.original_vertex(back[1]),
-                                           b.original_vertex(back[2]), b.original_vertex(back[3])}};
+        const std::array<std::uint32_t, 4> orig = b.original_tetrahedron_vertices(Tree::Index(t)); // user's
         std::array<std::uint32_t, 4> k = orig;
         std::sort(k.begin(), k.end());
         same_user_order = same_user_order && user[k] == orig;
@@ -900,7 +899,8 @@ void test_streaming_construction() {
   };
   CHECK_THROWS(std::invalid_argument, "tetrahedron 2 has vertex index 5 out of range",
                (void)build({{0, 1, 2, 3}, {1, 2, 3, 4}, {0, 1, 2, 5}}, 2));
-  CHECK_THROWS(std::invalid_argument, "tetrahedron 1 lists vertex 3 twice", (void)build({{0, 1, 2, 3}, {1, 3, 3, 4}}, 1));
+  CHECK_THROWS(std::invalid_argument, "tetrahedron 1 lists vertex 3 twice",
+               (void)build({{0, 1, 2, 3}, {1, 3, 3, 4}}, 1));
   CHECK_EQUAL(build({{0, 1, 2, 3}, {1, 2, 4, 3}}, 1).number_of_tetrahedra(), std::size_t(2));
   CHECK_EQUAL(build({}, 1).number_of_tetrahedra(), std::size_t(0));
   Mesh with_tets;

@@ -170,9 +170,10 @@ int run_boundary(const Options& o) {
                       .maximum_depth(o.max_depth())
                       .compact_tetrahedra(o.compact())
                       .coordinate_precision(o.coordinate_precision());
-  const Octree tree = streaming ? Octree(std::move(mesh), *streaming, np.vertex_permutation(false))
-                                : Octree(std::move(mesh), np.vertex_permutation(writes).tetrahedron_permutation(
-                                                              !out.empty() && !arrays.cell_data.empty()));
+  const Octree tree = streaming
+                          ? Octree(std::move(mesh), *streaming, np.vertex_permutation(false))
+                          : Octree(std::move(mesh), np.vertex_permutation(writes).tetrahedron_permutation(
+                                                        !out.empty() && !arrays.cell_data.empty()));
   o.set_used_kv(tree);
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("classifying the vertices");

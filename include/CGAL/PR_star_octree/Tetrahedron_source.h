@@ -35,13 +35,15 @@ public:
   /// \param labels `nullptr`, or one label per tetrahedron
   /// \param chunk the number of tetrahedra given at a time
   /// \throws std::invalid_argument if there is not one label per tetrahedron, or `chunk == 0`
-  explicit Tetrahedron_range_source(const TetrahedronRange& tetrahedra, const std::vector<int>* labels = nullptr,
+  explicit Tetrahedron_range_source(const TetrahedronRange& tetrahedra,
+                                    const std::vector<int>* labels = nullptr,
                                     std::size_t chunk = std::size_t(1) << 16)
       : tetrahedra_(&tetrahedra), labels_(labels), chunk_(chunk) {
-    if (chunk == 0) throw std::invalid_argument("Tetrahedron_range_source: the chunk size must be at least 1");
+    if (chunk == 0)
+      throw std::invalid_argument("Tetrahedron_range_source: the chunk size must be at least 1");
     if (labels != nullptr && labels->size() != size())
-      throw std::invalid_argument("Tetrahedron_range_source: " + std::to_string(labels->size()) + " labels for " +
-                                  std::to_string(size()) + " tetrahedra");
+      throw std::invalid_argument("Tetrahedron_range_source: " + std::to_string(labels->size()) +
+                                  " labels for " + std::to_string(size()) + " tetrahedra");
   }
 
   /// calls `f(vertices, labels, n)` for consecutive chunks of `n` tetrahedra: `vertices` holds 4
@@ -59,7 +61,8 @@ public:
         for (std::size_t k = 0; k < 4; ++k) buffer[4 * (t - b) + k] = static_cast<std::uint64_t>(it[k]);
       }
       f(static_cast<const std::uint64_t*>(buffer.data()),
-        labels_ != nullptr ? static_cast<const int*>(labels_->data() + b) : static_cast<const int*>(nullptr), e - b);
+        labels_ != nullptr ? static_cast<const int*>(labels_->data() + b) : static_cast<const int*>(nullptr),
+        e - b);
     }
   }
 

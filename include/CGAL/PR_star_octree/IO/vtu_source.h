@@ -59,7 +59,8 @@ public:
       xyz.clear();
       for (auto& a : arrays) a.clear();
       reader_.read_points(b, e, xyz, arrays);
-      for (std::size_t i = 0; i + 2 < xyz.size(); i += 3) mesh.points.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+      for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+        mesh.points.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
       for (std::size_t a = 0; a < arrays.size(); ++a)
         mesh.point_data[a].values.insert(mesh.point_data[a].values.end(), arrays[a].begin(), arrays[a].end());
     }
@@ -83,7 +84,8 @@ public:
       labels.clear();
       reader_.read_cells(b, e, tets, ids, with_labels ? &labels : nullptr, skipped);
       f(static_cast<const std::uint64_t*>(tets.data()),
-        with_labels ? static_cast<const int*>(labels.data()) : static_cast<const int*>(nullptr), tets.size() / 4);
+        with_labels ? static_cast<const int*>(labels.data()) : static_cast<const int*>(nullptr),
+        tets.size() / 4);
     }
     skipped_ = std::move(skipped);
   }

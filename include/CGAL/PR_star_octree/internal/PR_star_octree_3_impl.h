@@ -195,9 +195,9 @@ void PR_star_octree_3<GT, I>::choose_storage(std::size_t nv, std::size_t nt) {
   if (!can_store_floats && precision_ == PR_star_octree::Coordinate_precision::float32)
     throw std::invalid_argument("PR_star_octree_3: coordinate_precision float32 needs the traits' "
                                 "Construct_point_3 from three doubles");
-  float_coordinates_ = can_store_floats && (precision_ == PR_star_octree::Coordinate_precision::float32 ||
-                                            (precision_ == PR_star_octree::Coordinate_precision::as_input &&
-                                             input_float32_));
+  float_coordinates_ =
+      can_store_floats && (precision_ == PR_star_octree::Coordinate_precision::float32 ||
+                           (precision_ == PR_star_octree::Coordinate_precision::as_input && input_float32_));
 }
 
 template <class GT, class I>
@@ -346,7 +346,6 @@ std::vector<I> PR_star_octree_3<GT, I>::build_vertices() {
   return from_original;
 }
 
-
 // The streaming construction: V as in place, then the tetrahedra from `source`, read once to check
 // and count them by smallest vertex (and size their compact records), then once per slab of
 // smallest vertices, whose tetrahedra are placed in a buffer by counting (in the source's order
@@ -369,13 +368,14 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
       const std::uint64_t* c = v + 4 * i;
       for (int k = 0; k < 4; ++k)
         if (c[k] >= nv)
-          throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(nt) + " has vertex index " +
-                                      std::to_string(c[k]) + " out of range [0, " + std::to_string(nv) + ")");
+          throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(nt) +
+                                      " has vertex index " + std::to_string(c[k]) + " out of range [0, " +
+                                      std::to_string(nv) + ")");
       for (int a = 0; a < 4; ++a)
         for (int b = a + 1; b < 4; ++b)
           if (c[a] == c[b])
-            throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(nt) + " lists vertex " +
-                                        std::to_string(c[a]) + " twice");
+            throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(nt) +
+                                        " lists vertex " + std::to_string(c[a]) + " twice");
     }
     if (labels != nullptr) has_labels_ = true;
   });
@@ -387,13 +387,16 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
   std::vector<Index> first(nv + 1, 0);
   std::size_t bytes = 0, seen = 0;
   const auto changed = [&]() {
-    return std::invalid_argument("PR_star_octree_3: the tetrahedron source gave other tetrahedra on another pass");
+    return std::invalid_argument(
+        "PR_star_octree_3: the tetrahedron source gave other tetrahedra on another pass");
   };
   const auto renumber = [&](const std::uint64_t* c) {
     if ((std::max)((std::max)(c[0], c[1]), (std::max)(c[2], c[3])) >= nv) throw changed();
     return Tetrahedron{{from_original[c[0]], from_original[c[1]], from_original[c[2]], from_original[c[3]]}};
   };
-  const auto smallest = [](const Tetrahedron& c) { return (std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3])); };
+  const auto smallest = [](const Tetrahedron& c) {
+    return (std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3]));
+  };
   source.for_each_chunk([&](const std::uint64_t* v, const int*, std::size_t n) {
     for (std::size_t i = 0; i < n; ++i) {
       const Tetrahedron c = renumber(v + 4 * i);
@@ -466,7 +469,8 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
   std::vector<Index>().swap(first);
   std::vector<Index>().swap(from_original);
   degenerate_tetrahedra_ = degenerate.load();
-  for (std::uint64_t w : reoriented_) reoriented_count_ += static_cast<std::size_t>(std::bitset<64>(w).count());
+  for (std::uint64_t w : reoriented_)
+    reoriented_count_ += static_cast<std::size_t>(std::bitset<64>(w).count());
   if (reoriented_count_ == 0) std::vector<std::uint64_t>().swap(reoriented_);
   set_labels_uniform_if_possible();
   build_leaf_lists<ConcurrencyTag>();
@@ -697,7 +701,8 @@ template <class ConcurrencyTag>
 void PR_star_octree_3<GT, I>::build_leaf_lists() {
   // T plain (the in-place construction) or already compact (the streaming one)
   const bool from_compact = tetrahedra_.empty() && !compact_tetrahedra_.empty();
-  const std::size_t nv = number_of_vertices(), nt = from_compact ? compact_tetrahedra_.size() : tetrahedra_.size();
+  const std::size_t nv = number_of_vertices(),
+                    nt = from_compact ? compact_tetrahedra_.size() : tetrahedra_.size();
   // f(t, c) for the tetrahedra t of [b, e), decoded in one pass when compact
   const auto for_each_in = [&](std::size_t b, std::size_t e, auto&& f) {
     if (b >= e) return;
@@ -756,10 +761,11 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
   PR_star_octree::internal::for_each_block<ConcurrencyTag>(chunks, 1, [&](std::size_t cb, std::size_t ce) {
     std::array<Index, 4> ls;
     for (std::size_t c = cb; c < ce; ++c)
-      for_each_in(c * chunk_size, (std::min)(nt, (c + 1) * chunk_size), [&](std::size_t, const Tetrahedron& tet) {
-        const int k = distinct_leaves(tet, ls);
-        for (int i = 1; i < k; ++i) ++count[c * nl + ls[i]];
-      });
+      for_each_in(c * chunk_size, (std::min)(nt, (c + 1) * chunk_size),
+                  [&](std::size_t, const Tetrahedron& tet) {
+                    const int k = distinct_leaves(tet, ls);
+                    for (int i = 1; i < k; ++i) ++count[c * nl + ls[i]];
+                  });
   });
   std::size_t total = 0;
   for (Index n : count) total += n;
@@ -787,11 +793,12 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
   PR_star_octree::internal::for_each_block<ConcurrencyTag>(chunks, 1, [&](std::size_t cb, std::size_t ce) {
     std::array<Index, 4> ls;
     for (std::size_t c = cb; c < ce; ++c)
-      for_each_in(c * chunk_size, (std::min)(nt, (c + 1) * chunk_size), [&](std::size_t t, const Tetrahedron& tet) {
-        const int k = distinct_leaves(tet, ls);
-        CGAL_assertion(t >= owned[ls[0]] && t < owned[ls[0] + 1]);
-        for (int i = 1; i < k; ++i) list[count[c * nl + ls[i]]++] = static_cast<Index>(t);
-      });
+      for_each_in(c * chunk_size, (std::min)(nt, (c + 1) * chunk_size),
+                  [&](std::size_t t, const Tetrahedron& tet) {
+                    const int k = distinct_leaves(tet, ls);
+                    CGAL_assertion(t >= owned[ls[0]] && t < owned[ls[0] + 1]);
+                    for (int i = 1; i < k; ++i) list[count[c * nl + ls[i]]++] = static_cast<Index>(t);
+                  });
   });
   std::vector<Index>().swap(count);
 

@@ -152,7 +152,8 @@ public:
         st.vertex = m;
         st.rank = 0;
       }
-      if (st.t % block_size == 0) blocks_[st.t / block_size] = Block{st.offset, m, static_cast<Index>(st.rank)};
+      if (st.t % block_size == 0)
+        blocks_[st.t / block_size] = Block{st.offset, m, static_cast<Index>(st.rank)};
       std::uint64_t d[3];
       const unsigned control = encode(c, d);
       const std::size_t len = record_length_[control];
