@@ -227,6 +227,36 @@ public:
     take_mesh(std::move(mesh));
     build_with(np);
   }
+
+  /// Builds the PR-star octree without ever holding the plain tetrahedron array (streaming
+  /// construction, for meshes whose plain form does not fit in memory): `vertices` gives the
+  /// points, the scalar field (its first point-data array) and `float32_points`, moved in as by the
+  /// lean constructor, and must have no tetrahedra; the tetrahedra come from `tetrahedra`, a model
+  /// of `PRStarOctreeTetrahedronSource`, read several times: once to check and count them, once to
+  /// count them by smallest vertex, then once per slab of smallest vertices (a sixth of T or 2^20
+  /// tetrahedra at most), each slab placed, oriented and encoded.  The tetrahedra are stored
+  /// compactly (`compact_tetrahedra(true)` is implied), no tetrahedron permutation is kept, and the
+  /// tetrahedra of a smallest vertex keep the source's order.  The named parameters are those of the
+  /// other constructors (`parameters::default_values()` for none).
+  ///
+  /// \throws std::invalid_argument as the lean constructor, if `vertices` has tetrahedra or labels, or
+  ///         if the source gives other tetrahedra on another pass; what the source throws (e.g.
+  ///         `IO::Read_error`) goes through.
+  template <class TetrahedronSource, class NP>
+  PR_star_octree_3(PR_star_octree::Indexed_tetrahedral_mesh<Point_3, Index>&& vertices,
+                   const TetrahedronSource& tetrahedra, const NP& np)
+      : gt_(parameters::choose_parameter(parameters::get_parameter(np, internal_np::geom_traits),
+                                         Geom_traits())) {
+    read_parameters(np);
+    check_bucket_size();
+    if (!vertices.tetrahedra.empty() || !vertices.tetrahedron_labels.empty())
+      throw std::invalid_argument("PR_star_octree_3: the streaming construction takes the tetrahedra and "
+                                  "their labels from the source, not from the mesh");
+    take_mesh(std::move(vertices));
+    using Tag = typename internal_np::Lookup_named_param_def<PR_star_octree::internal_np::concurrency_tag_t,
+                                                             NP, CGAL::Parallel_if_available_tag>::type;
+    build_streaming<Tag>(tetrahedra);
+  }
   /// @}
 
   /// \name The mesh (new numbering)
@@ -491,6 +521,7 @@ private:
     keep_tetrahedron_permutation_ =
         choose_parameter(get_parameter(np, np_tags::tetrahedron_permutation), true);
     compact_ = choose_parameter(get_parameter(np, np_tags::compact_tetrahedra), false);
+    slab_tetrahedra_ = choose_parameter(get_parameter(np, np_tags::slab_tetrahedra), std::size_t(0));
     precision_ = choose_parameter(get_parameter(np, np_tags::coordinate_precision),
                                   PR_star_octree::Coordinate_precision::as_input);
   }
@@ -509,8 +540,13 @@ private:
   void copy_input(const InputMesh& input);
   void take_mesh(PR_star_octree::Indexed_tetrahedral_mesh<Point_3, Index>&& mesh);
   void set_labels_uniform_if_possible();
+  void choose_storage(std::size_t nv, std::size_t nt);
   template <class ConcurrencyTag>
   void build_in_place();
+  template <class ConcurrencyTag>
+  std::vector<Index> build_vertices();
+  template <class ConcurrencyTag, class TetrahedronSource>
+  void build_streaming(const TetrahedronSource& source);
   template <class ConcurrencyTag>
   void to_float();
   template <class ConcurrencyTag>
@@ -526,6 +562,7 @@ private:
   bool keep_vertex_permutation_ = true;
   bool keep_tetrahedron_permutation_ = true;
   bool compact_ = false;
+  std::size_t slab_tetrahedra_ = 0; // the streaming construction's slabs (0: the default)
   PR_star_octree::Coordinate_precision precision_ = PR_star_octree::Coordinate_precision::as_input;
   bool input_float32_ = false;     // the input said its coordinates are 32-bit floats
   bool float_coordinates_ = false; // `float_points_` holds V, `points_` is empty

@@ -9,6 +9,7 @@
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/IO.h>
+#include <CGAL/PR_star_octree/Tetrahedron_source.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include "test_harness.h"
@@ -801,6 +802,115 @@ void test_float_coordinates() {
   CHECK_EQUAL(Tree(CGAL::PR_star_octree::make_input(pts, one)).number_of_vertices(), std::size_t(4));
 }
 
+// The streaming construction (issue 24): the tetrahedra from a source read several times, a slab of
+// smallest vertices at a time; the same octree as the in-place construction with the compact T, on
+// a shuffled lattice with labels, a scalar field and reoriented tetrahedra, at several slab sizes
+// and chunk sizes; the errors.
+void test_streaming_construction() {
+  using Tree = CGAL::PR_star_octree_3<>;
+  namespace params = CGAL::PR_star_octree::parameters;
+  using Tets = std::vector<std::array<std::uint32_t, 4>>;
+  using Source = CGAL::PR_star_octree::Tetrahedron_range_source<Tets>;
+  Mesh mesh = shuffled_lattice(14, 8); // 16,464 tetrahedra
+  std::mt19937 rng(2);
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); t += 3)
+    std::swap(mesh.tetrahedra[t][0], mesh.tetrahedra[t][1]);
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) mesh.tetrahedron_labels.push_back(int(rng() % 3));
+  mesh.point_data.push_back({"f", std::vector<double>(mesh.points.size())});
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) mesh.point_data[0].values[v] = mesh.points[v].y() * 3;
+  // a tetrahedron's vertices with its label, sorted: the same whatever its index
+  const auto keyed = [](const Tree& tree, std::size_t t) {
+    std::array<std::uint32_t, 5> k{};
+    const auto c = tree.tetrahedron(Tree::Index(t));
+    for (int i = 0; i < 4; ++i) k[i] = tree.original_vertex(c[i]);
+    std::sort(k.begin(), k.begin() + 4);
+    k[4] = std::uint32_t(tree.tetrahedron_label(Tree::Index(t)));
+    return k;
+  };
+  for (std::size_t kv : {std::size_t(1), std::size_t(30)})
+    for (std::size_t slab : {std::size_t(1), std::size_t(777), std::size_t(0)}) {
+      const std::string what = "streaming, k_v=" + std::to_string(kv) + ", slab " + std::to_string(slab);
+      const prstar_test::Failure_context context(what);
+      const Tree a(CGAL::PR_star_octree::make_input(mesh), params::bucket_size(kv).compact_tetrahedra(true));
+      Mesh vertices = mesh;
+      const Tets tets = std::move(vertices.tetrahedra);
+      const std::vector<int> labels = std::move(vertices.tetrahedron_labels);
+      vertices.tetrahedra.clear();
+      vertices.tetrahedron_labels.clear();
+      const Source source(tets, &labels, slab == 777 ? 1000 : 64);
+      const Tree b(std::move(vertices), source, params::bucket_size(kv).slab_tetrahedra(slab));
+      CHECK(b.is_compact() && !b.has_tetrahedron_permutation());
+      CHECK(b.vertex_permutation() == a.vertex_permutation());
+      CHECK(std::equal(b.points().begin(), b.points().end(), a.points().begin(), a.points().end()));
+      CHECK(b.scalars() == a.scalars());
+      CHECK_EQUAL(b.number_of_tetrahedra(), a.number_of_tetrahedra());
+      // the same tetrahedra (vertices in the same order, as oriented), each smallest vertex's in
+      // the source's order; and the same labels
+      std::vector<std::array<std::uint32_t, 4>> ta(a.tetrahedra().begin(), a.tetrahedra().end()),
+          tb(b.tetrahedra().begin(), b.tetrahedra().end());
+      bool sorted_by_smallest = true;
+      for (std::size_t t = 1; t < tb.size(); ++t)
+        sorted_by_smallest = sorted_by_smallest && *std::min_element(tb[t - 1].begin(), tb[t - 1].end()) <=
+                                                       *std::min_element(tb[t].begin(), tb[t].end());
+      CHECK(sorted_by_smallest);
+      std::sort(ta.begin(), ta.end());
+      std::sort(tb.begin(), tb.end());
+      CHECK(ta == tb);
+      const auto sa = a.statistics(), sb = b.statistics();
+      CHECK_EQUAL(sb.reoriented_tetrahedra, sa.reoriented_tetrahedra);
+      CHECK(sb.reoriented_tetrahedra > 0);
+      CHECK_EQUAL(sb.leaf_tetrahedra_entries, sa.leaf_tetrahedra_entries);
+      CHECK(sb.subdomains == sa.subdomains);
+      // each leaf lists the same tetrahedra (by their vertices and label); the reorientation bits
+      // give back the user's vertex order
+      CHECK_EQUAL(b.number_of_leaves(), a.number_of_leaves());
+      bool same_leaves = true, same_user_order = true;
+      std::map<std::array<std::uint32_t, 4>, std::array<std::uint32_t, 4>> user; // sorted -> as listed
+      for (const auto& c : tets) {
+        std::array<std::uint32_t, 4> k = c;
+        std::sort(k.begin(), k.end());
+        user[k] = c;
+      }
+      for (std::size_t l = 0; l < a.number_of_leaves(); ++l) {
+        std::vector<std::array<std::uint32_t, 5>> la, lb;
+        for (auto t : a.leaf_tetrahedra(a.leaves()[l])) la.push_back(keyed(a, t));
+        for (auto t : b.leaf_tetrahedra(b.leaves()[l])) lb.push_back(keyed(b, t));
+        std::sort(la.begin(), la.end());
+        std::sort(lb.begin(), lb.end());
+        same_leaves = same_leaves && la == lb;
+      }
+      for (std::size_t t = 0; t < b.number_of_tetrahedra(); ++t) {
+        const std::array<std::uint32_t, 4> orig = b.original_tetrahedron_vertices(Tree::Index(t)); // user's
+        std::array<std::uint32_t, 4> k = orig;
+        std::sort(k.begin(), k.end());
+        same_user_order = same_user_order && user[k] == orig;
+      }
+      CHECK(same_leaves);
+      CHECK(same_user_order);
+    }
+
+  // Errors: named with the tetrahedron, before anything is built; tetrahedra in the mesh refused.
+  std::vector<Point> pts = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+  const auto build = [&](Tets t, std::size_t chunk) {
+    Mesh m;
+    m.points = pts;
+    const Source src(t, nullptr, chunk);
+    return Tree(std::move(m), src, params::default_values());
+  };
+  CHECK_THROWS(std::invalid_argument, "tetrahedron 2 has vertex index 5 out of range",
+               (void)build({{0, 1, 2, 3}, {1, 2, 3, 4}, {0, 1, 2, 5}}, 2));
+  CHECK_THROWS(std::invalid_argument, "tetrahedron 1 lists vertex 3 twice",
+               (void)build({{0, 1, 2, 3}, {1, 3, 3, 4}}, 1));
+  CHECK_EQUAL(build({{0, 1, 2, 3}, {1, 2, 4, 3}}, 1).number_of_tetrahedra(), std::size_t(2));
+  CHECK_EQUAL(build({}, 1).number_of_tetrahedra(), std::size_t(0));
+  Mesh with_tets;
+  with_tets.points = pts;
+  with_tets.tetrahedra = {{{0, 1, 2, 3}}};
+  const Tets none;
+  CHECK_THROWS(std::invalid_argument, "takes the tetrahedra and their labels from the source",
+               (void)Tree(std::move(with_tets), Source(none), params::default_values()));
+}
+
 // chi and |N| fall as k_v grows (paper Table 1), on a generated mesh.
 void test_table1_behaviour(const Mesh& mesh, const std::string& what) {
   auto in = CGAL::PR_star_octree::make_input(mesh);
@@ -834,6 +944,7 @@ int main(int argc, char** argv) {
   test_compact_tetrahedra();
   test_automatic_bucket_size();
   test_float_coordinates();
+  test_streaming_construction();
 
   // Generated meshes (CGAL Mesh_3 and TetGen, made by the test fixture).
   for (const char* name :

@@ -11,6 +11,7 @@
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/boundary.h>
 #include <CGAL/PR_star_octree/IO/surface.h>
+#include <CGAL/PR_star_octree/IO/vtu_source.h>
 #include <CGAL/PR_star_octree/parameters.h>
 #include <boost/property_map/property_map.hpp>
 
@@ -18,6 +19,7 @@
 #include <chrono>
 #include <cstdint>
 #include <iterator>
+#include <optional>
 #include <iostream>
 
 namespace prstar {
@@ -146,12 +148,20 @@ int run_boundary(const Options& o) {
   const std::size_t kv = o.kv();
   const std::string out = o.output(), surface_out = o.output("--surface");
   Progress_bar progress(o.show_progress());
-  Mesh mesh = read_mesh(input, progress);
+  const bool writes = !out.empty() || !surface_out.empty();
+  // --compact on a .vtu readable by ranges, nothing written: the streaming construction, which never
+  // holds the plain tetrahedron array (the tetrahedra are read from the file several times)
+  std::optional<PIO::Vtu_tetrahedron_source> streaming;
+  if (o.compact() && !writes && PIO::internal::lower_extension(input) == ".vtu") {
+    streaming.emplace(input);
+    if (!streaming->supported()) streaming.reset();
+  }
+  if (streaming) progress.phase("reading the vertices of " + input);
+  Mesh mesh = streaming ? streaming->read_vertices() : read_mesh(input, progress);
   // The octree takes the mesh over (no second copy of V and T).  Without an output to write it keeps
   // no permutation (only counts are reported); with one, the vertex permutation (4 bytes a vertex)
   // gives the output the user's vertex order, and the tetrahedron permutation, only when the mesh
   // has cell data, puts those arrays in the octree's order of the tetrahedra (the one written).
-  const bool writes = !out.empty() || !surface_out.empty();
   Mesh_arrays arrays(mesh);            // point and cell data, label names: kept aside in the user's order,
   if (!writes) arrays = Mesh_arrays(); // or dropped when not written
   const auto start = std::chrono::steady_clock::now();
@@ -160,8 +170,10 @@ int run_boundary(const Options& o) {
                       .maximum_depth(o.max_depth())
                       .compact_tetrahedra(o.compact())
                       .coordinate_precision(o.coordinate_precision());
-  const Octree tree(std::move(mesh), np.vertex_permutation(writes).tetrahedron_permutation(
-                                         !out.empty() && !arrays.cell_data.empty()));
+  const Octree tree = streaming
+                          ? Octree(std::move(mesh), *streaming, np.vertex_permutation(false))
+                          : Octree(std::move(mesh), np.vertex_permutation(writes).tetrahedron_permutation(
+                                                        !out.empty() && !arrays.cell_data.empty()));
   o.set_used_kv(tree);
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("classifying the vertices");

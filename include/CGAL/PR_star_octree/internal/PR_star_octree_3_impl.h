@@ -184,23 +184,28 @@ void PR_star_octree_3<GT, I>::set_labels_uniform_if_possible() {
 
 // Common to both paths: `points_`, `scalars_`, `labels_` and `tetrahedra_` hold the input, in its
 // order and numbering (indices in range); they are re-indexed in place.
+// The k_v (when automatic) and whether the coordinates are stored as floats.
 template <class GT, class I>
-template <class ConcurrencyTag>
-void PR_star_octree_3<GT, I>::build_in_place() {
-  const std::size_t nv = points_.size(), nt = tetrahedra_.size();
+void PR_star_octree_3<GT, I>::choose_storage(std::size_t nv, std::size_t nt) {
   if (bucket_size_ == automatic_bucket_size) {
     choice_ = PR_star_octree::choose_bucket_size(nv, nt, bucket_relations_);
     bucket_size_ = choice_.bucket_size;
     automatic_ = true;
   }
-
-  using PR_star_octree::internal::for_each_block;
   if (!can_store_floats && precision_ == PR_star_octree::Coordinate_precision::float32)
     throw std::invalid_argument("PR_star_octree_3: coordinate_precision float32 needs the traits' "
                                 "Construct_point_3 from three doubles");
   float_coordinates_ =
       can_store_floats && (precision_ == PR_star_octree::Coordinate_precision::float32 ||
                            (precision_ == PR_star_octree::Coordinate_precision::as_input && input_float32_));
+}
+
+template <class GT, class I>
+template <class ConcurrencyTag>
+void PR_star_octree_3<GT, I>::build_in_place() {
+  const std::size_t nv = points_.size(), nt = tetrahedra_.size();
+  choose_storage(nv, nt);
+  using PR_star_octree::internal::for_each_block;
   // Vertex indices out of range, then repeated vertices in a tetrahedron (in the user's numbering,
   // for the message): the first tetrahedron at fault is reported, whatever the number of threads.
   {
@@ -244,6 +249,27 @@ void PR_star_octree_3<GT, I>::build_in_place() {
     }
   }
 
+  std::vector<Index> from_original = build_vertices<ConcurrencyTag>();
+
+  // 3. T re-indexed, sorted, oriented; then the leaf lists.
+  sort_and_orient_tetrahedra<ConcurrencyTag>(from_original);
+  std::vector<Index>().swap(from_original);
+  set_labels_uniform_if_possible();
+  build_leaf_lists<ConcurrencyTag>();
+  if (compact_) {
+    compact_tetrahedra_.assign(tetrahedra_.data(), tetrahedra_.size(), number_of_vertices());
+    std::vector<Tetrahedron>().swap(tetrahedra_);
+  }
+}
+
+// Steps 0 to 2 of the construction, common to the in-place and the streaming ones: V (floats if
+// asked), the bounding cube, the PR split, V and the scalars gathered in the new order.  Returns
+// the new index of each input vertex.
+template <class GT, class I>
+template <class ConcurrencyTag>
+std::vector<I> PR_star_octree_3<GT, I>::build_vertices() {
+  const std::size_t nv = points_.size();
+  using PR_star_octree::internal::for_each_block;
   // 0. Coordinates stored as floats: converted first (nothing changes for an input of floats), so
   // that the octree and the orientations are those of the stored values.
   if (float_coordinates_) to_float<ConcurrencyTag>();
@@ -317,15 +343,137 @@ void PR_star_octree_3<GT, I>::build_in_place() {
   else
     std::vector<Index>().swap(order);
 
-  // 3. T re-indexed, sorted, oriented; then the leaf lists.
-  sort_and_orient_tetrahedra<ConcurrencyTag>(from_original);
+  return from_original;
+}
+
+// The streaming construction: V as in place, then the tetrahedra from `source`, read once to check
+// and count them by smallest vertex (and size their compact records), then once per slab of
+// smallest vertices, whose tetrahedra are placed in a buffer by counting (in the source's order
+// within each vertex), oriented exactly and appended to the compact array.  The plain T is never
+// whole in memory: the peak is the compact T, V and one slab of plain tetrahedra (at most a sixth
+// of T, or 2^20 tetrahedra).
+template <class GT, class I>
+template <class ConcurrencyTag, class TetrahedronSource>
+void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
+  using PR_star_octree::internal::for_each_block;
+  const std::size_t nv = points_.size();
+  compact_ = true;
+  keep_tetrahedron_permutation_ = false;
+  // Pass 1: the tetrahedra checked (in the user's numbering, for the messages) and counted: the
+  // automatic k_v needs |T| before V is split.
+  std::size_t nt = 0;
+  has_labels_ = false;
+  source.for_each_chunk([&](const std::uint64_t* v, const int* labels, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i, ++nt) {
+      const std::uint64_t* c = v + 4 * i;
+      for (int k = 0; k < 4; ++k)
+        if (c[k] >= nv)
+          throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(nt) +
+                                      " has vertex index " + std::to_string(c[k]) + " out of range [0, " +
+                                      std::to_string(nv) + ")");
+      for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b)
+          if (c[a] == c[b])
+            throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(nt) +
+                                        " lists vertex " + std::to_string(c[a]) + " twice");
+    }
+    if (labels != nullptr) has_labels_ = true;
+  });
+  check_sizes(nv, nt);
+  choose_storage(nv, nt);
+  std::vector<Index> from_original = build_vertices<ConcurrencyTag>();
+
+  // Pass 2: counts by smallest vertex (new numbering) and the bytes of the records.
+  std::vector<Index> first(nv + 1, 0);
+  std::size_t bytes = 0, seen = 0;
+  const auto changed = [&]() {
+    return std::invalid_argument(
+        "PR_star_octree_3: the tetrahedron source gave other tetrahedra on another pass");
+  };
+  const auto renumber = [&](const std::uint64_t* c) {
+    if ((std::max)((std::max)(c[0], c[1]), (std::max)(c[2], c[3])) >= nv) throw changed();
+    return Tetrahedron{{from_original[c[0]], from_original[c[1]], from_original[c[2]], from_original[c[3]]}};
+  };
+  const auto smallest = [](const Tetrahedron& c) {
+    return (std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3]));
+  };
+  source.for_each_chunk([&](const std::uint64_t* v, const int*, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Tetrahedron c = renumber(v + 4 * i);
+      ++first[smallest(c)];
+      bytes += compact_tetrahedra_.record_length(c);
+    }
+    seen += n;
+  });
+  if (seen != nt) throw changed();
+  compact_tetrahedra_.start(first.data(), nv, nt, bytes);
+  std::size_t sum = 0; // first[v]: the position of the first tetrahedron of v
+  for (std::size_t v = 0; v <= nv; ++v) {
+    const std::size_t c = first[v];
+    first[v] = static_cast<Index>(sum);
+    sum += c;
+  }
+  if (has_labels_) labels_.assign(nt, 0);
+  reoriented_.assign((nt + 63) / 64, 0);
+
+  // Passes 3...: the slabs.
+  const std::size_t slab =
+      slab_tetrahedra_ > 0 ? slab_tetrahedra_ : (std::max)(std::size_t(1) << 20, (nt + 5) / 6);
+  std::vector<Tetrahedron> buffer;
+  std::vector<Index> cursor;
+  std::atomic<std::size_t> degenerate{0};
+  for (std::size_t vb = 0; vb < nv;) {
+    std::size_t ve = vb + 1;
+    while (ve < nv && first[ve + 1] - first[vb] <= slab) ++ve;
+    const std::size_t tb = first[vb], te = first[ve];
+    if (te > tb) {
+      buffer.resize(te - tb);
+      cursor.assign(first.begin() + vb, first.begin() + ve);
+      source.for_each_chunk([&](const std::uint64_t* v, const int* labels, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) {
+          const Tetrahedron c = renumber(v + 4 * i);
+          const std::size_t m = smallest(c);
+          if (m < vb || m >= ve) continue;
+          const std::size_t p = cursor[m - vb]++;
+          if (p >= first[m + 1]) throw changed();
+          buffer[p - tb] = c;
+          if (has_labels_) labels_[p] = labels != nullptr ? labels[i] : 0;
+        }
+      });
+      for (std::size_t m = vb; m < ve; ++m)
+        if (cursor[m - vb] != first[m + 1]) throw changed();
+      // Positive orientation, exactly; blocks aligned on the words of `reoriented_` (each word is
+      // written by one block; the words before `tb` keep the previous slab's bits).
+      const std::size_t ab = tb - tb % 64;
+      for_each_block<ConcurrencyTag>(te - ab, 64 * 1024, [&](std::size_t b, std::size_t e) {
+        auto orientation = gt_.orientation_3_object();
+        std::size_t flat = 0;
+        for (std::size_t g = (std::max)(ab + b, tb); g < ab + e; ++g) {
+          Tetrahedron& c = buffer[g - tb];
+          const CGAL::Orientation o = orientation(point(c[0]), point(c[1]), point(c[2]), point(c[3]));
+          if (o == CGAL::NEGATIVE) {
+            std::swap(c[2], c[3]);
+            reoriented_[g >> 6] |= std::uint64_t(1) << (g & 63);
+          } else if (o == CGAL::COPLANAR)
+            ++flat;
+        }
+        degenerate += flat;
+      });
+      compact_tetrahedra_.append(buffer.data(), buffer.size());
+    }
+    vb = ve;
+  }
+  compact_tetrahedra_.finish();
+  std::vector<Tetrahedron>().swap(buffer);
+  std::vector<Index>().swap(cursor);
+  std::vector<Index>().swap(first);
   std::vector<Index>().swap(from_original);
+  degenerate_tetrahedra_ = degenerate.load();
+  for (std::uint64_t w : reoriented_)
+    reoriented_count_ += static_cast<std::size_t>(std::bitset<64>(w).count());
+  if (reoriented_count_ == 0) std::vector<std::uint64_t>().swap(reoriented_);
   set_labels_uniform_if_possible();
   build_leaf_lists<ConcurrencyTag>();
-  if (compact_) {
-    compact_tetrahedra_.assign(tetrahedra_.data(), tetrahedra_.size(), number_of_vertices());
-    std::vector<Tetrahedron>().swap(tetrahedra_);
-  }
 }
 
 // V converted to floats, each coordinate rounded to the nearest one, in the input order, and the
@@ -551,7 +699,20 @@ void PR_star_octree_3<GT, I>::sort_and_orient_tetrahedra(const std::vector<Index
 template <class GT, class I>
 template <class ConcurrencyTag>
 void PR_star_octree_3<GT, I>::build_leaf_lists() {
-  const std::size_t nv = number_of_vertices(), nt = tetrahedra_.size();
+  // T plain (the in-place construction) or already compact (the streaming one)
+  const bool from_compact = tetrahedra_.empty() && !compact_tetrahedra_.empty();
+  const std::size_t nv = number_of_vertices(),
+                    nt = from_compact ? compact_tetrahedra_.size() : tetrahedra_.size();
+  // f(t, c) for the tetrahedra t of [b, e), decoded in one pass when compact
+  const auto for_each_in = [&](std::size_t b, std::size_t e, auto&& f) {
+    if (b >= e) return;
+    if (!from_compact) {
+      for (std::size_t t = b; t < e; ++t) f(t, tetrahedra_[t]);
+      return;
+    }
+    typename PR_star_octree::internal::Compact_tetrahedra<Index>::Cursor cursor(compact_tetrahedra_, b);
+    for (std::size_t t = b; t < e; ++t, ++cursor) f(t, *cursor);
+  };
   const std::size_t nl = leaves_.size();
   std::vector<Index> leaf_of(nv); // position of the leaf in `leaves_`
   for (std::size_t l = 0; l < nl; ++l) {
@@ -576,12 +737,21 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
     return (std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3]));
   };
   std::vector<std::size_t> owned(nl + 1, nt);
-  for (std::size_t l = 0; l < nl; ++l) {
-    const Index vb = nodes_[leaves_[l]].vertex_begin;
-    owned[l] = static_cast<std::size_t>(
-        std::partition_point(tetrahedra_.begin(), tetrahedra_.end(),
-                             [&](const Tetrahedron& c) { return smallest(c) < vb; }) -
-        tetrahedra_.begin());
+  if (from_compact) { // the leaves' vertex ranges are consecutive: running sums of the counts
+    std::size_t sum = 0;
+    for (std::size_t l = 0; l < nl; ++l) {
+      owned[l] = sum;
+      const Node& nd = nodes_[leaves_[l]];
+      for (Index v = nd.vertex_begin; v < nd.vertex_end; ++v) sum += compact_tetrahedra_.count(v);
+    }
+  } else {
+    for (std::size_t l = 0; l < nl; ++l) {
+      const Index vb = nodes_[leaves_[l]].vertex_begin;
+      owned[l] = static_cast<std::size_t>(
+          std::partition_point(tetrahedra_.begin(), tetrahedra_.end(),
+                               [&](const Tetrahedron& c) { return smallest(c) < vb; }) -
+          tetrahedra_.begin());
+    }
   }
   const std::size_t chunks = PR_star_octree::internal::is_parallel<ConcurrencyTag>()
                                  ? (std::min)(std::size_t(16), (std::max)(std::size_t(1), nt >> 16))
@@ -591,10 +761,11 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
   PR_star_octree::internal::for_each_block<ConcurrencyTag>(chunks, 1, [&](std::size_t cb, std::size_t ce) {
     std::array<Index, 4> ls;
     for (std::size_t c = cb; c < ce; ++c)
-      for (std::size_t t = c * chunk_size; t < (std::min)(nt, (c + 1) * chunk_size); ++t) {
-        const int k = distinct_leaves(tetrahedra_[t], ls);
-        for (int i = 1; i < k; ++i) ++count[c * nl + ls[i]];
-      }
+      for_each_in(c * chunk_size, (std::min)(nt, (c + 1) * chunk_size),
+                  [&](std::size_t, const Tetrahedron& tet) {
+                    const int k = distinct_leaves(tet, ls);
+                    for (int i = 1; i < k; ++i) ++count[c * nl + ls[i]];
+                  });
   });
   std::size_t total = 0;
   for (Index n : count) total += n;
@@ -622,11 +793,12 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
   PR_star_octree::internal::for_each_block<ConcurrencyTag>(chunks, 1, [&](std::size_t cb, std::size_t ce) {
     std::array<Index, 4> ls;
     for (std::size_t c = cb; c < ce; ++c)
-      for (std::size_t t = c * chunk_size; t < (std::min)(nt, (c + 1) * chunk_size); ++t) {
-        const int k = distinct_leaves(tetrahedra_[t], ls);
-        CGAL_assertion(t >= owned[ls[0]] && t < owned[ls[0] + 1]);
-        for (int i = 1; i < k; ++i) list[count[c * nl + ls[i]]++] = static_cast<Index>(t);
-      }
+      for_each_in(c * chunk_size, (std::min)(nt, (c + 1) * chunk_size),
+                  [&](std::size_t t, const Tetrahedron& tet) {
+                    const int k = distinct_leaves(tet, ls);
+                    CGAL_assertion(t >= owned[ls[0]] && t < owned[ls[0] + 1]);
+                    for (int i = 1; i < k; ++i) list[count[c * nl + ls[i]]++] = static_cast<Index>(t);
+                  });
   });
   std::vector<Index>().swap(count);
 

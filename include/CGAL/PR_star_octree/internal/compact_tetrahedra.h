@@ -113,6 +113,73 @@ public:
     for (const auto& b : big) big_counts_.emplace_back(b.first, static_cast<Index>(b.second));
   }
 
+  // Streaming encoding, for tetrahedra that arrive in slabs (the streaming construction):
+  // `start()` takes the number of tetrahedra of which each vertex is the smallest (`counts[v]`,
+  // `nv` of them) and the exact number of bytes of the records (the sum of `record_length()`), then
+  // `append()` encodes consecutive tetrahedra in order, and `finish()` checks that all came.
+  // \throws std::invalid_argument on tetrahedra that do not match the counts
+  template <class Count>
+  void start(const Count* counts, std::size_t nv, std::size_t nt, std::size_t total_bytes) {
+    size_ = nt;
+    std::vector<unsigned char>().swap(bytes_);
+    blocks_.clear();
+    big_counts_.clear();
+    counts_.assign(nv, 0);
+    std::size_t sum = 0;
+    for (std::size_t v = 0; v < nv; ++v) {
+      const std::size_t c = static_cast<std::size_t>(counts[v]);
+      sum += c;
+      if (c < 255)
+        counts_[v] = static_cast<unsigned char>(c);
+      else {
+        counts_[v] = 255;
+        big_counts_.emplace_back(static_cast<Index>(v), static_cast<Index>(c));
+      }
+    }
+    if (sum != nt) throw std::invalid_argument("Compact_tetrahedra::start: the counts do not add up to nt");
+    bytes_.resize(total_bytes + 8, 0);
+    blocks_.resize(nt / block_size + (nt % block_size != 0 ? 1 : 0));
+    stream_ = Stream{};
+  }
+  void append(const Tetrahedron* T, std::size_t n) {
+    Stream& st = stream_;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Tetrahedron& c = T[i];
+      const Index m = (std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3]));
+      if (st.t >= size_ || (st.t > 0 && m < st.vertex))
+        throw std::invalid_argument("Compact_tetrahedra::append: a tetrahedron out of order or too many");
+      if (st.t == 0 || m != st.vertex) {
+        st.vertex = m;
+        st.rank = 0;
+      }
+      if (st.t % block_size == 0)
+        blocks_[st.t / block_size] = Block{st.offset, m, static_cast<Index>(st.rank)};
+      std::uint64_t d[3];
+      const unsigned control = encode(c, d);
+      const std::size_t len = record_length_[control];
+      if (st.offset + len > bytes_.size() - 8)
+        throw std::invalid_argument("Compact_tetrahedra::append: more bytes than announced");
+      unsigned char* out = bytes_.data() + st.offset;
+      *out++ = static_cast<unsigned char>(control);
+      for (int k = 0; k < 3; ++k) {
+        const unsigned l = length_of((control >> (2 + 2 * k)) & 3u);
+        for (unsigned b = 0; b < l; ++b) *out++ = static_cast<unsigned char>(d[k] >> (8 * b));
+      }
+      st.offset += len;
+      ++st.rank;
+      ++st.t;
+    }
+  }
+  void finish() const {
+    if (stream_.t != size_ || stream_.offset + 8 != bytes_.size())
+      throw std::invalid_argument("Compact_tetrahedra::finish: not every tetrahedron came");
+  }
+  // the bytes of the record of tetrahedron `c` (the same for any order of its vertices)
+  std::size_t record_length(const Tetrahedron& c) const {
+    std::uint64_t d[3];
+    return record_length_[encode(c, d)];
+  }
+
   std::size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
 
@@ -261,6 +328,12 @@ private:
     }
   }
 
+  struct Stream { // where `append()` is
+    std::size_t t = 0, rank = 0;
+    std::uint64_t offset = 0;
+    Index vertex = 0;
+  };
+  Stream stream_;
   std::size_t size_ = 0;
   std::vector<unsigned char> bytes_;
   std::vector<unsigned char> counts_;

@@ -1,0 +1,106 @@
+// Copyright (c) 2026 The PR-star octree project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Author(s): The PR-star octree project
+
+#ifndef CGAL_PR_STAR_OCTREE_IO_VTU_SOURCE_H
+#define CGAL_PR_STAR_OCTREE_IO_VTU_SOURCE_H
+
+/// \file vtu_source.h
+/// The tetrahedra of a `.vtu` file as a `PRStarOctreeTetrahedronSource`, for the streaming
+/// construction of `PR_star_octree_3`.
+
+#include <CGAL/PR_star_octree/IO/Read_error.h>
+#include <CGAL/PR_star_octree/IO/internal/vtu_ranges.h>
+#include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace PR_star_octree {
+namespace IO {
+
+/// \ingroup PkgPRStarOctreeIO
+/// \cgalModels `PRStarOctreeTetrahedronSource`
+///
+/// Reads a `.vtu` file by ranges (one `<Piece>`, every array appended raw, no compressor: what
+/// `prstar generate` and `write_vtu(..., use_binary_mode(true).compression(Compression::none))`
+/// write): `read_vertices()` gives its points and point data, `for_each_chunk()` its tetrahedra
+/// (VTK type 10; the other cells are skipped and counted) and their labels, chunk by chunk, the file
+/// read again at every pass.  The values are those of `read_vtu()`.
+class Vtu_tetrahedron_source {
+public:
+  /// Reads the header of `file`.  \throws Read_error when it is missing or malformed
+  explicit Vtu_tetrahedron_source(const std::string& file) : reader_(file) {}
+
+  /// whether the file can be read by ranges; when not, `reason()` says why and it must be read whole
+  bool supported() const { return reader_.ranges_supported(); }
+  const std::string& reason() const { return reader_.reason(); }
+  std::uint64_t number_of_vertices() const { return reader_.number_of_points(); }
+  std::uint64_t number_of_cells() const { return reader_.number_of_cells(); }
+
+  /// The points, the point-data arrays and `float32_points` of the file, as a mesh without
+  /// tetrahedra (read in chunks: no transient copy of the whole).  \throws Read_error for bad data
+  Indexed_tetrahedral_mesh<> read_vertices() const {
+    Indexed_tetrahedral_mesh<> mesh;
+    const std::uint64_t nv = reader_.number_of_points();
+    mesh.points.reserve(static_cast<std::size_t>(nv));
+    const std::vector<std::string>& names = reader_.point_array_names();
+    for (const std::string& name : names) mesh.point_data.push_back({name, {}});
+    std::vector<double> xyz;
+    std::vector<std::vector<double>> arrays(names.size());
+    for (std::uint64_t b = 0; b < nv; b += chunk) {
+      const std::uint64_t e = (std::min)(nv, b + chunk);
+      xyz.clear();
+      for (auto& a : arrays) a.clear();
+      reader_.read_points(b, e, xyz, arrays);
+      for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+        mesh.points.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+      for (std::size_t a = 0; a < arrays.size(); ++a)
+        mesh.point_data[a].values.insert(mesh.point_data[a].values.end(), arrays[a].begin(), arrays[a].end());
+    }
+    mesh.float32_points = reader_.float32_points();
+    return mesh;
+  }
+
+  /// calls `f(vertices, labels, n)` for consecutive chunks of tetrahedra (see
+  /// `PRStarOctreeTetrahedronSource`); \throws Read_error for bad data
+  template <class F>
+  void for_each_chunk(F f) const {
+    std::vector<std::uint64_t> tets, ids;
+    std::vector<int> labels;
+    std::map<std::string, std::size_t> skipped;
+    const std::uint64_t nc = reader_.number_of_cells();
+    const bool with_labels = reader_.has_labels();
+    for (std::uint64_t b = 0; b < nc; b += chunk) {
+      const std::uint64_t e = (std::min)(nc, b + chunk);
+      tets.clear();
+      ids.clear();
+      labels.clear();
+      reader_.read_cells(b, e, tets, ids, with_labels ? &labels : nullptr, skipped);
+      f(static_cast<const std::uint64_t*>(tets.data()),
+        with_labels ? static_cast<const int*>(labels.data()) : static_cast<const int*>(nullptr),
+        tets.size() / 4);
+    }
+    skipped_ = std::move(skipped);
+  }
+
+  /// the cells other than tetrahedra met by the last pass, by type name
+  const std::map<std::string, std::size_t>& skipped_cells() const { return skipped_; }
+
+private:
+  static constexpr std::uint64_t chunk = std::uint64_t(1) << 20;
+  internal::Vtu_range_reader reader_;
+  mutable std::map<std::string, std::size_t> skipped_;
+};
+
+} // namespace IO
+} // namespace PR_star_octree
+} // namespace CGAL
+
+#endif // CGAL_PR_STAR_OCTREE_IO_VTU_SOURCE_H
