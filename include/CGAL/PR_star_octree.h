@@ -232,9 +232,10 @@ public:
   /// construction, for meshes whose plain form does not fit in memory): `vertices` gives the
   /// points, the scalar field (its first point-data array) and `float32_points`, moved in as by the
   /// lean constructor, and must have no tetrahedra; the tetrahedra come from `tetrahedra`, a model
-  /// of `PRStarOctreeTetrahedronSource`, read several times: once to check and count them, once to
-  /// count them by smallest vertex, then once per slab of smallest vertices (a sixth of T or 2^20
-  /// tetrahedra at most), each slab placed, oriented and encoded.  The tetrahedra are stored
+  /// of `PRStarOctreeTetrahedronSource`, read several times: once to check and count them (not
+  /// when the source has `number_of_tetrahedra()`), once to count them by smallest vertex, then
+  /// once per slab of smallest vertices (by default min(6, |T| / 2^20 rounded up) slabs of equal
+  /// parts of T; see `slab_tetrahedra`), each slab placed, oriented and encoded.  The tetrahedra are stored
   /// compactly (`compact_tetrahedra(true)` is implied), no tetrahedron permutation is kept, and the
   /// tetrahedra of a smallest vertex keep the source's order.  The named parameters are those of the
   /// other constructors (`parameters::default_values()` for none).

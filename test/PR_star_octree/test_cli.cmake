@@ -188,6 +188,10 @@ endforeach()
 run(1 "" "lattice.vtu:[0-9]+: the mesh announced \\(343 vertices, 1296 tetrahedra\\) needs about .*refused before reading it.*--max-memory"
     boundary ${WORK}/lattice.vtu --max-memory 20K)
 run(0 "\"interior_vertices\": 125," "" boundary ${WORK}/lattice.vtu --max-memory 1M --json)
+# the same with --compact, built by streaming (issue 24): the limit applies to what it holds
+run(1 "" "lattice.vtu:[0-9]+: the mesh announced \\(343 vertices, 1296 tetrahedra\\) needs about .*--max-memory"
+    boundary ${WORK}/lattice.vtu --compact --max-memory 10K)
+run(0 "\"interior_vertices\": 125," "" boundary ${WORK}/lattice.vtu --compact --max-memory 1M --json)
 run(0 "\"interior_vertices\": 125," "" boundary ${WORK}/lattice.vtu --max-memory unlimited --json)
 run(2 "" "--max-memory: '12X' is not a size" stats ${WORK}/lattice.vtu --max-memory 12X)
 run(2 "" "--threads must be a positive integer" stats ${WORK}/lattice.vtu --threads 0)

@@ -14,6 +14,7 @@
 
 #include <CGAL/PR_star_octree/IO.h>
 #include <CGAL/PR_star_octree/IO/internal/vtu_ranges.h>
+#include <CGAL/PR_star_octree/IO/vtu_source.h>
 
 #include <array>
 #include <cmath>
@@ -224,6 +225,46 @@ Read read_ranges(const Reader& r, const std::vector<std::uint64_t>& points,
   return out;
 }
 
+/// The tetrahedron source of the streaming construction gives what the whole-file reader gives,
+/// chunk by chunk (one cell, five cells, all of them at a time), every pass.
+void check_source(const std::string& file, const Mesh& m) {
+  for (std::size_t chunk : {std::size_t(1), std::size_t(5), std::size_t(1) << 19}) {
+    prstar_test::Failure_context c("Vtu_tetrahedron_source, chunks of " + std::to_string(chunk));
+    const IO::Vtu_tetrahedron_source source(file, chunk);
+    CHECK(source.supported());
+    CHECK_EQUAL(source.number_of_tetrahedra(), std::uint64_t(m.tetrahedra.size()));
+    const Mesh v = source.read_vertices();
+    CHECK(v.points == m.points);
+    CHECK_EQUAL(v.float32_points, m.float32_points);
+    CHECK(v.tetrahedra.empty() && v.tetrahedron_labels.empty());
+    CHECK_EQUAL(v.point_data.size(), m.point_data.size());
+    for (std::size_t i = 0; i < v.point_data.size() && i < m.point_data.size(); ++i)
+      CHECK(v.point_data[i].name == m.point_data[i].name && v.point_data[i].values == m.point_data[i].values);
+    for (int pass = 0; pass < 2; ++pass) {
+      std::vector<std::array<std::uint32_t, 4>> tets;
+      std::vector<int> labels;
+      bool labels_given = false;
+      std::size_t calls = 0;
+      source.for_each_chunk([&](const std::uint64_t* t, const int* l, std::size_t n) {
+        ++calls;
+        CHECK(n <= chunk);
+        for (std::size_t i = 0; i < n; ++i) {
+          tets.push_back({std::uint32_t(t[4 * i]), std::uint32_t(t[4 * i + 1]), std::uint32_t(t[4 * i + 2]),
+                          std::uint32_t(t[4 * i + 3])});
+          if (l != nullptr) labels.push_back(l[i]);
+        }
+        labels_given = labels_given || l != nullptr;
+      });
+      CHECK(tets == m.tetrahedra);
+      CHECK_EQUAL(labels_given, !m.tetrahedron_labels.empty());
+      CHECK(labels == m.tetrahedron_labels);
+      CHECK(source.skipped_cells() == m.skipped_cells);
+      CHECK_EQUAL(calls, std::size_t((source.number_of_cells() + chunk - 1) / chunk));
+    }
+  }
+  CHECK_THROWS(std::invalid_argument, "chunk size", IO::Vtu_tetrahedron_source(file, 0));
+}
+
 /// Reads `file` whole and in ranges of every kind; checks that they agree.
 void check_ranges(const std::string& file, const std::string& label_name,
                   const std::vector<std::uint64_t>* tet_cells) {
@@ -280,6 +321,7 @@ void check_ranges(const std::string& file, const std::string& label_name,
   std::map<std::string, std::size_t> skipped;
   r.read_cells(0, nc, t, ids, nullptr, skipped);
   CHECK(t == tets);
+  check_source(file, m);
 }
 
 void test_hand_made() {
@@ -421,6 +463,14 @@ void test_malformed() {
     CHECK_THROWS(IO::Read_error, message, r.read_cells(cell, cell + 1, t, ids, &labels, skipped));
     CHECK(t.empty() && ids.empty() && labels.empty() && skipped.empty()); // left as they were
     r.read_cells(0, cell - 1, t, ids, &labels, skipped);                  // before it: fine
+    // the tetrahedron source: the error comes out of the pass, read ahead by another thread or not
+    for (std::size_t chunk : {std::size_t(1), std::size_t(2), std::size_t(64)}) {
+      std::size_t given = 0;
+      CHECK_THROWS(IO::Read_error, message,
+                   IO::Vtu_tetrahedron_source(f, chunk).for_each_chunk(
+                       [&](const std::uint64_t*, const int*, std::size_t n) { given += n; }));
+      CHECK(given <= cell);
+    }
   };
   Grid bad = g;
   bad.connectivity[4 * 3 + 2] = 27;

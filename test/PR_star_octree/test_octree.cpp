@@ -806,6 +806,26 @@ void test_float_coordinates() {
 // smallest vertices at a time; the same octree as the in-place construction with the compact T, on
 // a shuffled lattice with labels, a scalar field and reoriented tetrahedra, at several slab sizes
 // and chunk sizes; the errors.
+template <class Source>
+struct Uncounted { // a tetrahedron source without number_of_tetrahedra()
+  const Source& source;
+  template <class F>
+  void for_each_chunk(F f) const {
+    source.for_each_chunk(f);
+  }
+};
+
+template <class Source>
+struct Miscounted { // a tetrahedron source whose count is not what it gives
+  const Source& source;
+  std::size_t count;
+  std::size_t number_of_tetrahedra() const { return count; }
+  template <class F>
+  void for_each_chunk(F f) const {
+    source.for_each_chunk(f);
+  }
+};
+
 void test_streaming_construction() {
   using Tree = CGAL::PR_star_octree_3<>;
   namespace params = CGAL::PR_star_octree::parameters;
@@ -838,7 +858,11 @@ void test_streaming_construction() {
       vertices.tetrahedra.clear();
       vertices.tetrahedron_labels.clear();
       const Source source(tets, &labels, slab == 777 ? 1000 : 64);
-      const Tree b(std::move(vertices), source, params::bucket_size(kv).slab_tetrahedra(slab));
+      // a source that does not count its tetrahedra (read once more, to count them) for slab 777
+      const Tree b = slab == 777
+                         ? Tree(std::move(vertices), Uncounted<Source>{source},
+                                params::bucket_size(kv).slab_tetrahedra(slab))
+                         : Tree(std::move(vertices), source, params::bucket_size(kv).slab_tetrahedra(slab));
       CHECK(b.is_compact() && !b.has_tetrahedron_permutation());
       CHECK(b.vertex_permutation() == a.vertex_permutation());
       CHECK(std::equal(b.points().begin(), b.points().end(), a.points().begin(), a.points().end()));
@@ -891,18 +915,29 @@ void test_streaming_construction() {
 
   // Errors: named with the tetrahedron, before anything is built; tetrahedra in the mesh refused.
   std::vector<Point> pts = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
-  const auto build = [&](Tets t, std::size_t chunk) {
+  for (bool counted : {true, false}) {
+    const auto build = [&](Tets t, std::size_t chunk) {
+      Mesh m;
+      m.points = pts;
+      const Source src(t, nullptr, chunk);
+      return counted ? Tree(std::move(m), src, params::default_values())
+                     : Tree(std::move(m), Uncounted<Source>{src}, params::default_values());
+    };
+    CHECK_THROWS(std::invalid_argument, "tetrahedron 2 has vertex index 5 out of range",
+                 (void)build({{0, 1, 2, 3}, {1, 2, 3, 4}, {0, 1, 2, 5}}, 2));
+    CHECK_THROWS(std::invalid_argument, "tetrahedron 1 lists vertex 3 twice",
+                 (void)build({{0, 1, 2, 3}, {1, 3, 3, 4}}, 1));
+    CHECK_EQUAL(build({{0, 1, 2, 3}, {1, 2, 4, 3}}, 1).number_of_tetrahedra(), std::size_t(2));
+    CHECK_EQUAL(build({}, 1).number_of_tetrahedra(), std::size_t(0));
+  }
+  { // a source whose count is not what it gives
     Mesh m;
     m.points = pts;
-    const Source src(t, nullptr, chunk);
-    return Tree(std::move(m), src, params::default_values());
-  };
-  CHECK_THROWS(std::invalid_argument, "tetrahedron 2 has vertex index 5 out of range",
-               (void)build({{0, 1, 2, 3}, {1, 2, 3, 4}, {0, 1, 2, 5}}, 2));
-  CHECK_THROWS(std::invalid_argument, "tetrahedron 1 lists vertex 3 twice",
-               (void)build({{0, 1, 2, 3}, {1, 3, 3, 4}}, 1));
-  CHECK_EQUAL(build({{0, 1, 2, 3}, {1, 2, 4, 3}}, 1).number_of_tetrahedra(), std::size_t(2));
-  CHECK_EQUAL(build({}, 1).number_of_tetrahedra(), std::size_t(0));
+    const Tets two = {{0, 1, 2, 3}, {1, 2, 4, 3}};
+    const Source src(two);
+    CHECK_THROWS(std::invalid_argument, "gave 2 tetrahedra, not the 3 it counted",
+                 (void)Tree(std::move(m), Miscounted<Source>{src, 3}, params::default_values()));
+  }
   Mesh with_tets;
   with_tets.points = pts;
   with_tets.tetrahedra = {{{0, 1, 2, 3}}};

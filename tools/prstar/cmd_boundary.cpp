@@ -152,7 +152,7 @@ int run_boundary(const Options& o) {
   // --compact on a .vtu readable by ranges, nothing written: the streaming construction, which never
   // holds the plain tetrahedron array (the tetrahedra are read from the file several times)
   std::optional<PIO::Vtu_tetrahedron_source> streaming;
-  if (o.compact() && !writes && PIO::internal::lower_extension(input) == ".vtu") {
+  if (o.compact() && !writes && PIO::internal::lower_extension(input) == "vtu") {
     streaming.emplace(input);
     if (!streaming->supported()) streaming.reset();
   }
@@ -217,7 +217,10 @@ Command boundary_command() {
       .input()
       .description(
           R"(Classifies every vertex of MESH as interior, boundary or non-manifold, leaf by leaf (paper
-Section 7: 2|e| != 3|t| in the vertex link, plus a check that the link is a sphere or a disc).)")
+Section 7: 2|e| != 3|t| in the vertex link, plus a check that the link is a sphere or a disc).
+With --compact and neither OUT nor SURF, a .vtu whose arrays are appended raw (as prstar generate
+writes them) is read in passes, the tetrahedra a slab at a time: the plain tetrahedron array
+(16 bytes each) is never held whole.)")
       .kv()
       .max_depth()
       .output("OUT", point_data_outputs(),

@@ -10,6 +10,7 @@ Every pass must give the same tetrahedra in the same order; the construction che
 otherwise.
 
 \cgalHasModel `CGAL::PR_star_octree::Tetrahedron_range_source`
+\cgalHasModel `CGAL::PR_star_octree::IO::Vtu_tetrahedron_source`
 
 \sa `PRStarOctreeInputMesh`
 */
@@ -24,4 +25,12 @@ public:
   */
   template <class F>
   void for_each_chunk(F f) const;
+
+  /*!
+  Optional: the number of tetrahedra `for_each_chunk()` gives, when the source knows it without
+  a pass over them (a count in memory, a file's cell types).  The construction then checks the
+  tetrahedra in its pass counting them by smallest vertex instead of a pass of their own, and
+  throws when the number given differs.
+  */
+  std::size_t number_of_tetrahedra() const;
 };

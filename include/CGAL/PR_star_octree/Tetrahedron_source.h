@@ -66,6 +66,9 @@ public:
     }
   }
 
+  /// the number of tetrahedra (so the construction does not count them in a pass of its own)
+  std::size_t number_of_tetrahedra() const { return size(); }
+
 private:
   std::size_t size() const { return static_cast<std::size_t>(std::size(*tetrahedra_)); }
   const TetrahedronRange* tetrahedra_;

@@ -103,7 +103,7 @@ CGAL_PR_STAR_OCTREE_FOR_EACH_PARAMETER(CGAL_PR_STAR_OCTREE_TAG)
 /// | `vertex_permutation(bool)`, `tetrahedron_permutation(bool)` | the `PR_star_octree_3` constructors | `true` |
 /// | `compact_tetrahedra(bool)` | the `PR_star_octree_3` constructors | `false` |
 /// | `coordinate_precision(Coordinate_precision)` | the `PR_star_octree_3` constructors | `Coordinate_precision::as_input` |
-/// | `slab_tetrahedra(std::size_t)` | the streaming `PR_star_octree_3` constructor: the most tetrahedra placed in one pass | max(2^20, |T| / 6) |
+/// | `slab_tetrahedra(std::size_t)` | the streaming `PR_star_octree_3` constructor: the tetrahedra placed in one pass (T is cut in |T| / this, rounded up, equal parts by smallest vertex; a part may take the star of one vertex more) | 2^20, and at most 6 parts |
 /// | `concurrency_tag(Tag)` | the `PR_star_octree_3` constructors (the algorithms take the tag as their `ConcurrencyTag` template argument) | `CGAL::Parallel_if_available_tag()` |
 /// | `check_links(bool)` | `compute_boundary()`, `Vertex_classifier` | `true` |
 /// | `with_boundary_triangles(bool)` | `compute_boundary()` | `true` |

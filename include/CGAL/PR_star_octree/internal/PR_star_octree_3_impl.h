@@ -360,25 +360,31 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
   compact_ = true;
   keep_tetrahedron_permutation_ = false;
   // Pass 1: the tetrahedra checked (in the user's numbering, for the messages) and counted: the
-  // automatic k_v needs |T| before V is split.
+  // automatic k_v needs |T| before V is split.  A source that knows its number of tetrahedra
+  // saves this pass: they are checked in pass 2.
+  const auto check = [nv](const std::uint64_t* c, std::size_t t) {
+    for (int k = 0; k < 4; ++k)
+      if (c[k] >= nv)
+        throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
+                                    " has vertex index " + std::to_string(c[k]) + " out of range [0, " +
+                                    std::to_string(nv) + ")");
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        if (c[a] == c[b])
+          throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
+                                      " lists vertex " + std::to_string(c[a]) + " twice");
+  };
+  constexpr bool counted = PR_star_octree::internal::has_number_of_tetrahedra<TetrahedronSource>::value;
   std::size_t nt = 0;
   has_labels_ = false;
-  source.for_each_chunk([&](const std::uint64_t* v, const int* labels, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i, ++nt) {
-      const std::uint64_t* c = v + 4 * i;
-      for (int k = 0; k < 4; ++k)
-        if (c[k] >= nv)
-          throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(nt) +
-                                      " has vertex index " + std::to_string(c[k]) + " out of range [0, " +
-                                      std::to_string(nv) + ")");
-      for (int a = 0; a < 4; ++a)
-        for (int b = a + 1; b < 4; ++b)
-          if (c[a] == c[b])
-            throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(nt) +
-                                        " lists vertex " + std::to_string(c[a]) + " twice");
-    }
-    if (labels != nullptr) has_labels_ = true;
-  });
+  if constexpr (counted) {
+    nt = static_cast<std::size_t>(source.number_of_tetrahedra());
+  } else {
+    source.for_each_chunk([&](const std::uint64_t* v, const int* labels, std::size_t n) {
+      for (std::size_t i = 0; i < n; ++i, ++nt) check(v + 4 * i, nt);
+      if (labels != nullptr) has_labels_ = true;
+    });
+  }
   check_sizes(nv, nt);
   choose_storage(nv, nt);
   std::vector<Index> from_original = build_vertices<ConcurrencyTag>();
@@ -397,7 +403,11 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
   const auto smallest = [](const Tetrahedron& c) {
     return (std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3]));
   };
-  source.for_each_chunk([&](const std::uint64_t* v, const int*, std::size_t n) {
+  source.for_each_chunk([&](const std::uint64_t* v, const int* labels, std::size_t n) {
+    if constexpr (counted) {
+      for (std::size_t i = 0; i < n; ++i) check(v + 4 * i, seen + i);
+      if (labels != nullptr) has_labels_ = true;
+    }
     for (std::size_t i = 0; i < n; ++i) {
       const Tetrahedron c = renumber(v + 4 * i);
       ++first[smallest(c)];
@@ -405,7 +415,12 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
     }
     seen += n;
   });
-  if (seen != nt) throw changed();
+  if (seen != nt) {
+    if (counted)
+      throw std::invalid_argument("PR_star_octree_3: the tetrahedron source gave " + std::to_string(seen) +
+                                  " tetrahedra, not the " + std::to_string(nt) + " it counted");
+    throw changed();
+  }
   compact_tetrahedra_.start(first.data(), nv, nt, bytes);
   std::size_t sum = 0; // first[v]: the position of the first tetrahedron of v
   for (std::size_t v = 0; v <= nv; ++v) {
@@ -416,15 +431,20 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
   if (has_labels_) labels_.assign(nt, 0);
   reoriented_.assign((nt + 63) / 64, 0);
 
-  // Passes 3...: the slabs.
-  const std::size_t slab =
-      slab_tetrahedra_ > 0 ? slab_tetrahedra_ : (std::max)(std::size_t(1) << 20, (nt + 5) / 6);
+  // Passes 3...: the slabs, cut where the tetrahedra of the smallest vertices reach equal parts
+  // of T (a slab is its part and at most the star of one vertex more): |T| / slab_tetrahedra of
+  // them rounded up, or by default min(6, |T| / 2^20 rounded up).
+  const std::size_t per_slab = slab_tetrahedra_ > 0 ? slab_tetrahedra_ : std::size_t(1) << 20;
+  std::size_t slabs = (std::max)(std::size_t(1), (nt + per_slab - 1) / per_slab);
+  if (slab_tetrahedra_ == 0) slabs = (std::min)(slabs, std::size_t(6));
   std::vector<Tetrahedron> buffer;
   std::vector<Index> cursor;
   std::atomic<std::size_t> degenerate{0};
-  for (std::size_t vb = 0; vb < nv;) {
+  for (std::size_t vb = 0, s = 1; vb < nv; ++s) {
+    // the part ends at the s-th of `slabs` equal parts of T (nt * s / slabs without overflow)
+    const std::size_t target = s >= slabs ? nt : nt / slabs * s + nt % slabs * s / slabs;
     std::size_t ve = vb + 1;
-    while (ve < nv && first[ve + 1] - first[vb] <= slab) ++ve;
+    while (ve < nv && first[ve] < target) ++ve;
     const std::size_t tb = first[vb], te = first[ve];
     if (te > tb) {
       buffer.resize(te - tb);

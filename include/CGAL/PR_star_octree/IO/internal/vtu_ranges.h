@@ -82,6 +82,9 @@ public:
   /// `float32_points` (the values `read_points()` gives are then floats)
   bool float32_points() const { return points_.kind == Kind::FLOAT && points_.size == 4; }
   std::uint64_t number_of_cells() const { return nc_; }
+  /// the file, and the line of its `<Piece>` (for messages about the whole mesh)
+  const std::string& file() const { return file_; }
+  std::size_t piece_line() const { return piece_line_; }
 
   /// the point-data arrays `read_vtu` keeps (one component, any numeric type), in file order
   const std::vector<std::string>& point_array_names() const { return point_names_; }
@@ -128,6 +131,16 @@ public:
       skipped.swap(skipped_before);
       throw;
     }
+  }
+
+  /// the number of cells of VTK type `type`, from the array of cell types alone
+  std::uint64_t number_of_cells_of_type(unsigned char type) const {
+    std::ifstream in = open();
+    Cursor types(*this, in, types_, 0, nc_);
+    std::uint64_t n = 0;
+    for (std::uint64_t i = 0; i < nc_; ++i)
+      if (types.integer() == type) ++n;
+    return n;
   }
 
 private:
@@ -198,8 +211,11 @@ private:
           ++skipped[vtk_cell_type_name(t)];
         } else {
           std::array<std::uint64_t, 4> v;
-          for (std::uint64_t& x : v) {
-            const long long k = conn.integer();
+          long long four[4];
+          conn.integers(four, 4);
+          for (int j = 0; j < 4; ++j) {
+            std::uint64_t& x = v[j];
+            const long long k = four[j];
             if (k < 0 || static_cast<unsigned long long>(k) >= nv_)
               fail_cells("cell " + std::to_string(i) + ": vertex index " + std::to_string(k) +
                          " out of range (0-based, " + std::to_string(nv_) + " points)");
@@ -261,6 +277,22 @@ private:
       if (u > static_cast<std::uint64_t>(std::numeric_limits<long long>::max()))
         r_.fail(a_.line, a_.what + ": value " + std::to_string(index_ - 1) + " is too large");
       return static_cast<long long>(u);
+    }
+
+    /// the next `n` values as integers, as `integer()` would give them (faster when they are
+    /// 32- or 64-bit signed integers already read)
+    void integers(long long* out, std::size_t n) {
+      if (a_.kind == Kind::SIGNED && (a_.size == 8 || a_.size == 4) && buffer_.size() - pos_ >= n * a_.size) {
+        const char* p = reinterpret_cast<const char*>(buffer_.data() + pos_);
+        if (a_.size == 8)
+          for (std::size_t k = 0; k < n; ++k) out[k] = load_value<std::int64_t>(p + 8 * k, r_.swap_);
+        else
+          for (std::size_t k = 0; k < n; ++k) out[k] = load_value<std::int32_t>(p + 4 * k, r_.swap_);
+        pos_ += n * a_.size;
+        index_ += n;
+        return;
+      }
+      for (std::size_t k = 0; k < n; ++k) out[k] = integer();
     }
 
     /// the next value as a double (finite)
@@ -474,6 +506,7 @@ private:
       return;
     }
     const Xml_element& piece = *pieces[0];
+    piece_line_ = piece.line;
     const auto count_attribute = [&](const char* key) {
       const std::string* v = piece.attribute(key);
       if (v == nullptr) fail(piece.line, std::string("<Piece> without ") + key);
@@ -673,6 +706,7 @@ private:
   std::size_t header_size_ = 4;
   std::uint64_t nv_ = 0, nc_ = 0;
   std::size_t cells_line_ = 0;
+  std::size_t piece_line_ = 0;
   Array points_, connectivity_, offsets_, types_, label_array_;
   bool has_labels_ = false;
   std::string label_name_;
