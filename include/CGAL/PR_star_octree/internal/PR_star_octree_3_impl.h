@@ -25,6 +25,18 @@ namespace CGAL {
 namespace PR_star_octree {
 namespace internal {
 
+// The errors of a bad tetrahedron (`t` in the user's numbering), the same from every construction.
+template <class V>
+std::invalid_argument vertex_out_of_range(std::size_t t, V v, std::size_t nv) {
+  return std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) + " has vertex index " +
+                               std::to_string(v) + " out of range [0, " + std::to_string(nv) + ")");
+}
+template <class V>
+std::invalid_argument vertex_listed_twice(std::size_t t, V v) {
+  return std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) + " lists vertex " +
+                               std::to_string(v) + " twice");
+}
+
 // Calls `f(begin, end)` on consecutive blocks of [0, n) whose boundaries are multiples of `grain`
 // (so that blocks never share a 64-bit word of a bit array when `grain` is a multiple of 64): with
 // several threads when `ConcurrencyTag` is parallel.
@@ -129,9 +141,7 @@ void PR_star_octree_3<GT, I>::copy_input(const InputMesh& input) {
       const auto v = c[k];
       // (also rejects the negative indices of a signed index type)
       if (!(v >= 0) || static_cast<std::size_t>(v) >= nv)
-        throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
-                                    " has vertex index " + std::to_string(v) + " out of range [0, " +
-                                    std::to_string(nv) + ")");
+        throw PR_star_octree::internal::vertex_out_of_range(t, v, nv);
       r[k] = static_cast<Index>(v);
     }
   }
@@ -234,18 +244,14 @@ void PR_star_octree_3<GT, I>::build_in_place() {
           first = x;
           break;
         }
-      throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
-                                  " has vertex index " + std::to_string(first) + " out of range [0, " +
-                                  std::to_string(nv) + ")");
+      throw PR_star_octree::internal::vertex_out_of_range(t, first, nv);
     }
     if (repeated.load() != none) {
       const std::size_t t = repeated.load();
       const Tetrahedron& r = tetrahedra_[t];
       for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j)
-          if (r[i] == r[j])
-            throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
-                                        " lists vertex " + std::to_string(r[i]) + " twice");
+          if (r[i] == r[j]) throw PR_star_octree::internal::vertex_listed_twice(t, r[i]);
     }
   }
 
@@ -364,15 +370,10 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
   // saves this pass: they are checked in pass 2.
   const auto check = [nv](const std::uint64_t* c, std::size_t t) {
     for (int k = 0; k < 4; ++k)
-      if (c[k] >= nv)
-        throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
-                                    " has vertex index " + std::to_string(c[k]) + " out of range [0, " +
-                                    std::to_string(nv) + ")");
+      if (c[k] >= nv) throw PR_star_octree::internal::vertex_out_of_range(t, c[k], nv);
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b)
-        if (c[a] == c[b])
-          throw std::invalid_argument("PR_star_octree_3: tetrahedron " + std::to_string(t) +
-                                      " lists vertex " + std::to_string(c[a]) + " twice");
+        if (c[a] == c[b]) throw PR_star_octree::internal::vertex_listed_twice(t, c[a]);
   };
   constexpr bool counted = PR_star_octree::internal::has_number_of_tetrahedra<TetrahedronSource>::value;
   std::size_t nt = 0;
