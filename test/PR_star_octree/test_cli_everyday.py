@@ -324,6 +324,31 @@ r = prstar("generate", "--shape", "donut", "--cell-size", "0.1", "-o", "d.mesh",
 check("lattice" in r.stderr, "generate --shape donut: " + r.stderr)
 prstar("generate", "--shape", "lattice", "--cells", "2", "-o", "lattice.mesh", "--quiet")
 check(len(meshio.read(path("lattice.mesh")).cells[0].data) == 48, "generate --shape lattice -o .mesh")
+# the streamed .vtu (raw appended, 32-bit connectivity and offsets), read by meshio: (N+1)^3
+# points on the jittered lattice, 6 N^3 positively oriented tetrahedra, each the Kuhn tetrahedron
+# of one cube from its corner 0 to its corner 7, and the point array x^2 / (N + 1) + y - z
+prstar("generate", "--shape", "lattice", "--cells", "3", "-o", "lattice3.vtu", "--quiet")
+with open(path("lattice3.vtu"), "rb") as f:
+    head = f.read(2048).split(b"<AppendedData")[0].decode()
+check('type="Int32" Name="connectivity"' in head and 'type="Int32" Name="offsets"' in head,
+      "generate --shape lattice: 32-bit connectivity and offsets: " + head)
+m = meshio.read(path("lattice3.vtu"))
+P = np.asarray(m.points, dtype=float)
+T = np.asarray(m.cells_dict.get("tetra", np.zeros((0, 4))), dtype=np.int64)
+check(P.shape == (64, 3) and T.shape == (162, 4), "lattice3.vtu: %s points, %s tetrahedra" % (P.shape, T.shape))
+if P.shape == (64, 3) and T.shape == (162, 4):
+    g = np.array([[i % 4, i // 4 % 4, i // 16] for i in range(64)], dtype=float)
+    check(np.abs(P - g).max() <= 0.1 and np.all(P[(g == 0) | (g == 3)] == g[(g == 0) | (g == 3)]),
+          "lattice3.vtu: points off the jittered lattice")
+    s = np.asarray(m.point_data["scalar"], dtype=float)
+    check(np.allclose(s, P[:, 0] ** 2 / 4 + P[:, 1] - P[:, 2], rtol=0, atol=1e-12), "lattice3.vtu: scalar")
+    lo, hi = g[T].min(axis=1), g[T].max(axis=1)
+    check(np.all(hi - lo == 1), "lattice3.vtu: a tetrahedron not in one cube")
+    check(all(any((g[t] == l).all() for t in tt) and any((g[t] == l + 1).all() for t in tt)
+              for tt, l in zip(T, lo)), "lattice3.vtu: a tetrahedron without its cube's corners 0 and 7")
+    d = P[T[:, 1:]] - P[T[:, :1]]
+    check(np.all(np.linalg.det(d) > 0), "lattice3.vtu: a tetrahedron not positively oriented")
+    check(len({tuple(sorted(t)) for t in T.tolist()}) == 162, "lattice3.vtu: a tetrahedron listed twice")
 
 # The README's table of commands is the tool's own list
 if len(sys.argv) > 3:

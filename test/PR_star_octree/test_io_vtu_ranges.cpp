@@ -41,7 +41,8 @@ using Reader = IO::internal::Vtu_range_reader;
 namespace fs = std::filesystem;
 
 /// The cells of a hand-made file: a 2 x 2 x 2 block of cubes cut in 6 tetrahedra each, with a
-/// triangle, a hexahedron, a quadratic tetrahedron and a vertex among them.
+/// triangle, a hexahedron, a quadratic tetrahedron and a vertex among them (unless
+/// `tetrahedra_only`).
 struct Grid {
   std::vector<double> xyz;
   std::vector<long long> connectivity, offsets;
@@ -49,7 +50,7 @@ struct Grid {
   std::vector<std::uint64_t> tet_cells; // the indices of the tetrahedra
 };
 
-Grid make_grid() {
+Grid make_grid(bool tetrahedra_only = false) {
   Grid g;
   const int k = 3;
   for (int z = 0; z < k; ++z)
@@ -57,6 +58,7 @@ Grid make_grid() {
       for (int x = 0; x < k; ++x) g.xyz.insert(g.xyz.end(), {x * 1.5, y * 0.75 - 1, z * 0.1});
   const auto id = [&](int x, int y, int z) { return (z * k + y) * k + x; };
   const auto add = [&](int type, std::vector<long long> v) {
+    if (tetrahedra_only && type != 10) return;
     if (type == 10) g.tet_cells.push_back(g.types.size());
     g.connectivity.insert(g.connectivity.end(), v.begin(), v.end());
     g.offsets.push_back(static_cast<long long>(g.connectivity.size()));
@@ -226,42 +228,46 @@ Read read_ranges(const Reader& r, const std::vector<std::uint64_t>& points,
 }
 
 /// The tetrahedron source of the streaming construction gives what the whole-file reader gives,
-/// chunk by chunk (one cell, five cells, all of them at a time), every pass.
+/// chunk by chunk (one cell, five cells, all of them at a time), every pass, asked for its number
+/// of tetrahedra first (then a file of tetrahedra only is read from its connectivity alone) or not.
 void check_source(const std::string& file, const Mesh& m) {
-  for (std::size_t chunk : {std::size_t(1), std::size_t(5), std::size_t(1) << 19}) {
-    prstar_test::Failure_context c("Vtu_tetrahedron_source, chunks of " + std::to_string(chunk));
-    const IO::Vtu_tetrahedron_source source(file, chunk);
-    CHECK(source.supported());
-    CHECK_EQUAL(source.number_of_tetrahedra(), std::uint64_t(m.tetrahedra.size()));
-    const Mesh v = source.read_vertices();
-    CHECK(v.points == m.points);
-    CHECK_EQUAL(v.float32_points, m.float32_points);
-    CHECK(v.tetrahedra.empty() && v.tetrahedron_labels.empty());
-    CHECK_EQUAL(v.point_data.size(), m.point_data.size());
-    for (std::size_t i = 0; i < v.point_data.size() && i < m.point_data.size(); ++i)
-      CHECK(v.point_data[i].name == m.point_data[i].name && v.point_data[i].values == m.point_data[i].values);
-    for (int pass = 0; pass < 2; ++pass) {
-      std::vector<std::array<std::uint32_t, 4>> tets;
-      std::vector<int> labels;
-      bool labels_given = false;
-      std::size_t calls = 0;
-      source.for_each_chunk([&](const std::uint64_t* t, const int* l, std::size_t n) {
-        ++calls;
-        CHECK(n <= chunk);
-        for (std::size_t i = 0; i < n; ++i) {
-          tets.push_back({std::uint32_t(t[4 * i]), std::uint32_t(t[4 * i + 1]), std::uint32_t(t[4 * i + 2]),
-                          std::uint32_t(t[4 * i + 3])});
-          if (l != nullptr) labels.push_back(l[i]);
-        }
-        labels_given = labels_given || l != nullptr;
-      });
-      CHECK(tets == m.tetrahedra);
-      CHECK_EQUAL(labels_given, !m.tetrahedron_labels.empty());
-      CHECK(labels == m.tetrahedron_labels);
-      CHECK(source.skipped_cells() == m.skipped_cells);
-      CHECK_EQUAL(calls, std::size_t((source.number_of_cells() + chunk - 1) / chunk));
+  for (std::size_t chunk : {std::size_t(1), std::size_t(5), std::size_t(1) << 19})
+    for (bool counted : {true, false}) {
+      prstar_test::Failure_context c("Vtu_tetrahedron_source, chunks of " + std::to_string(chunk) +
+                                     (counted ? ", counted" : ""));
+      const IO::Vtu_tetrahedron_source source(file, chunk);
+      CHECK(source.supported());
+      if (counted) CHECK_EQUAL(source.number_of_tetrahedra(), std::uint64_t(m.tetrahedra.size()));
+      const Mesh v = source.read_vertices();
+      CHECK(v.points == m.points);
+      CHECK_EQUAL(v.float32_points, m.float32_points);
+      CHECK(v.tetrahedra.empty() && v.tetrahedron_labels.empty());
+      CHECK_EQUAL(v.point_data.size(), m.point_data.size());
+      for (std::size_t i = 0; i < v.point_data.size() && i < m.point_data.size(); ++i)
+        CHECK(v.point_data[i].name == m.point_data[i].name &&
+              v.point_data[i].values == m.point_data[i].values);
+      for (int pass = 0; pass < 2; ++pass) {
+        std::vector<std::array<std::uint32_t, 4>> tets;
+        std::vector<int> labels;
+        bool labels_given = false;
+        std::size_t calls = 0;
+        source.for_each_chunk([&](const std::uint64_t* t, const int* l, std::size_t n) {
+          ++calls;
+          CHECK(n <= chunk);
+          for (std::size_t i = 0; i < n; ++i) {
+            tets.push_back({std::uint32_t(t[4 * i]), std::uint32_t(t[4 * i + 1]), std::uint32_t(t[4 * i + 2]),
+                            std::uint32_t(t[4 * i + 3])});
+            if (l != nullptr) labels.push_back(l[i]);
+          }
+          labels_given = labels_given || l != nullptr;
+        });
+        CHECK(tets == m.tetrahedra);
+        CHECK_EQUAL(labels_given, !m.tetrahedron_labels.empty());
+        CHECK(labels == m.tetrahedron_labels);
+        CHECK(source.skipped_cells() == m.skipped_cells);
+        CHECK_EQUAL(calls, std::size_t((source.number_of_cells() + chunk - 1) / chunk));
+      }
     }
-  }
   CHECK_THROWS(std::invalid_argument, "chunk size", IO::Vtu_tetrahedron_source(file, 0));
 }
 
@@ -321,6 +327,19 @@ void check_ranges(const std::string& file, const std::string& label_name,
   std::map<std::string, std::size_t> skipped;
   r.read_cells(0, nc, t, ids, nullptr, skipped);
   CHECK(t == tets);
+  // the summary of the cells, and the cells read from the connectivity alone when it allows
+  const Reader::Cell_summary summary = r.summarize_cells();
+  CHECK_EQUAL(summary.tetrahedra, std::uint64_t(m.tetrahedra.size()));
+  CHECK_EQUAL(summary.only_tetrahedra_in_order, m.skipped_cells.empty());
+  if (summary.only_tetrahedra_in_order) {
+    for (const auto& p : partitions) {
+      Read got;
+      for (std::size_t i = 0; i + 1 < p.second.size(); ++i)
+        r.read_tetrahedra(p.second[i], p.second[i + 1], got.tets, &got.labels);
+      CHECK(got.tets == tets);
+      CHECK(got.labels == m.tetrahedron_labels);
+    }
+  }
   check_source(file, m);
 }
 
@@ -348,6 +367,23 @@ void test_hand_made() {
           }
           ++files;
         }
+  // tetrahedra only: read from the connectivity alone when the source has counted them
+  const Grid tg = make_grid(true);
+  for (int i = 0; i < 8; ++i) {
+    Spec s;
+    s.big_endian = i % 2 == 1;
+    s.header64 = i % 3 == 0;
+    s.conn_type = i < 4 ? "Int32" : i < 6 ? "UInt64" : "Int64";
+    s.points64 = i % 2 == 0;
+    s.labels = i % 4;
+    const std::string file = write_file("tets_" + std::to_string(i) + ".vtu", make_vtu(tg, s));
+    const char* names[] = {"", "CellEntityIds", "labels", "MaterialIds"};
+    try {
+      check_ranges(file, names[s.labels], &tg.tet_cells);
+    } catch (const std::exception& e) {
+      FAIL(file << ": " << e.what());
+    }
+  }
   // the names the whole-file reader gives (the unnamed array too), the cells skipped
   Mesh m;
   IO::read_tetrahedral_mesh((tmp_dir / "hand_0.vtu").string(), m);
@@ -463,14 +499,18 @@ void test_malformed() {
     CHECK_THROWS(IO::Read_error, message, r.read_cells(cell, cell + 1, t, ids, &labels, skipped));
     CHECK(t.empty() && ids.empty() && labels.empty() && skipped.empty()); // left as they were
     r.read_cells(0, cell - 1, t, ids, &labels, skipped);                  // before it: fine
-    // the tetrahedron source: the error comes out of the pass, read ahead by another thread or not
-    for (std::size_t chunk : {std::size_t(1), std::size_t(2), std::size_t(64)}) {
-      std::size_t given = 0;
-      CHECK_THROWS(IO::Read_error, message,
-                   IO::Vtu_tetrahedron_source(f, chunk).for_each_chunk(
-                       [&](const std::uint64_t*, const int*, std::size_t n) { given += n; }));
-      CHECK(given <= cell);
-    }
+    // the tetrahedron source: the error comes out of the pass, read ahead by another thread or not,
+    // also from the connectivity alone (a file of tetrahedra only, counted first)
+    for (std::size_t chunk : {std::size_t(1), std::size_t(2), std::size_t(64)})
+      for (bool counted : {false, true}) {
+        std::size_t given = 0;
+        const IO::Vtu_tetrahedron_source source(f, chunk);
+        if (counted) CHECK_EQUAL(source.number_of_tetrahedra(), std::uint64_t(bad.tet_cells.size()));
+        CHECK_THROWS(
+            IO::Read_error, message,
+            source.for_each_chunk([&](const std::uint64_t*, const int*, std::size_t n) { given += n; }));
+        CHECK(given <= cell);
+      }
   };
   Grid bad = g;
   bad.connectivity[4 * 3 + 2] = 27;
@@ -484,6 +524,21 @@ void test_malformed() {
   bad = g;
   bad.offsets[10] = bad.offsets[9] - 1;
   cell_error("decrease.vtu", bad, 10, "cell offsets decrease at cell 10");
+  // the same in a file of tetrahedra only (the connectivity read alone after counting)
+  const Grid tg = make_grid(true);
+  bad = tg;
+  bad.connectivity[4 * 7 + 1] = 27;
+  cell_error("tets_index.vtu", bad, 7, "cell 7: vertex index 27 out of range");
+  bad = tg;
+  bad.connectivity[4 * 40 + 3] = bad.connectivity[4 * 40];
+  cell_error("tets_twice.vtu", bad, 40, "cell 40: vertex index");
+  bad = tg;
+  bad.offsets[10] = bad.offsets[9] - 1;
+  cell_error("tets_decrease.vtu", bad, 10, "cell offsets decrease at cell 10");
+  {
+    const Reader r(write_file("tets_decrease.vtu", make_vtu(bad, s)));
+    CHECK(!r.summarize_cells().only_tetrahedra_in_order);
+  }
 
   // a coordinate that is not finite
   Grid nan = g;

@@ -83,8 +83,14 @@ void write_lattice_vtu(std::ostream& out, const Lattice& lattice,
   const std::size_t n = lattice.cells, side = n + 1;
   if (n == 0) throw std::invalid_argument("--cells must be at least 1");
   const std::uint64_t nv = lattice.number_of_vertices(), nt = lattice.number_of_tetrahedra();
-  const std::uint64_t scalar_bytes = 8 * nv, point_bytes = 24 * nv, connectivity_bytes = 32 * nt,
-                      offset_bytes = 8 * nt, type_bytes = nt;
+  // 32-bit connectivity and offsets where they fit: half the bytes of the file, and of every pass
+  // that reads it again (VTK reads either width)
+  const bool int32_connectivity = nv - 1 <= 0x7FFFFFFFull, int32_offsets = 4 * nt <= 0x7FFFFFFFull;
+  const char* connectivity_type = int32_connectivity ? "Int32" : "Int64";
+  const char* offset_type = int32_offsets ? "Int32" : "Int64";
+  const std::uint64_t scalar_bytes = 8 * nv, point_bytes = 24 * nv,
+                      connectivity_bytes = (int32_connectivity ? 16 : 32) * nt,
+                      offset_bytes = (int32_offsets ? 4 : 8) * nt, type_bytes = nt;
   const std::uint64_t o_scalar = 0, o_points = o_scalar + 8 + scalar_bytes,
                       o_conn = o_points + 8 + point_bytes, o_offsets = o_conn + 8 + connectivity_bytes,
                       o_types = o_offsets + 8 + offset_bytes;
@@ -96,8 +102,10 @@ void write_lattice_vtu(std::ostream& out, const Lattice& lattice,
       << o_scalar << "\"/>\n</PointData>\n"
       << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"appended\" offset=\""
       << o_points << "\"/>\n</Points>\n<Cells>\n"
-      << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" offset=\"" << o_conn << "\"/>\n"
-      << "<DataArray type=\"Int64\" Name=\"offsets\" format=\"appended\" offset=\"" << o_offsets << "\"/>\n"
+      << "<DataArray type=\"" << connectivity_type << "\" Name=\"connectivity\" format=\"appended\" offset=\""
+      << o_conn << "\"/>\n"
+      << "<DataArray type=\"" << offset_type << "\" Name=\"offsets\" format=\"appended\" offset=\""
+      << o_offsets << "\"/>\n"
       << "<DataArray type=\"UInt8\" Name=\"types\" format=\"appended\" offset=\"" << o_types << "\"/>\n"
       << "</Cells>\n</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_";
   const std::uint64_t total = nv + nt; // progress units: vertices, then tetrahedra
@@ -134,13 +142,23 @@ void write_lattice_vtu(std::ostream& out, const Lattice& lattice,
             c[b] = static_cast<std::int64_t>((x + (b & 1)) +
                                              side * ((y + ((b >> 1) & 1)) + side * (z + ((b >> 2) & 1))));
           for (const auto& t : kuhn)
-            for (int k : t) sink.put(c[k]);
+            for (int k : t) {
+              if (int32_connectivity)
+                sink.put(static_cast<std::int32_t>(c[k]));
+              else
+                sink.put(c[k]);
+            }
         }
       done += 6 * n * n;
       progress(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
     }
     sink.put(offset_bytes);
-    for (std::uint64_t t = 1; t <= nt; ++t) sink.put(static_cast<std::int64_t>(4 * t));
+    for (std::uint64_t t = 1; t <= nt; ++t) {
+      if (int32_offsets)
+        sink.put(static_cast<std::int32_t>(4 * t));
+      else
+        sink.put(static_cast<std::int64_t>(4 * t));
+    }
     sink.put(type_bytes);
     for (std::uint64_t t = 0; t < nt; ++t) sink.put(static_cast<std::uint8_t>(10));
     sink.flush();

@@ -23,7 +23,8 @@ struct Lattice {
 };
 
 /// Writes the lattice as a VTK XML UnstructuredGrid with raw appended binary data (Float64 points
-/// and scalar, Int64 connectivity and offsets, UInt8 types, UInt64 headers), streaming: memory
+/// and scalar, Int32 connectivity and offsets where they fit and Int64 otherwise, UInt8 types,
+/// UInt64 headers), streaming: memory
 /// does not grow with the lattice.  `progress(done, total)` is called as it goes.  Appended, unlike
 /// the package's `.vtu` writer, so that `IO::read_mesh_part()` reads each rank's byte ranges.
 void write_lattice_vtu(std::ostream& out, const Lattice& lattice,

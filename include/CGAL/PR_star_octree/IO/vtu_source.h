@@ -53,9 +53,15 @@ public:
   std::uint64_t number_of_cells() const { return reader_.number_of_cells(); }
 
   /// the number of tetrahedra (VTK type 10) of the file, counted in its array of cell types (so
-  /// the construction does not read the whole connectivity to count them); \throws Read_error for
-  /// bad data
-  std::uint64_t number_of_tetrahedra() const { return reader_.number_of_cells_of_type(10); }
+  /// the construction does not read the whole connectivity to count them).  When every cell is a
+  /// tetrahedron and the offsets are those of consecutive tetrahedra (4, 8, 12...: what `prstar
+  /// generate` writes), checked here once, the passes of `for_each_chunk()` that follow read the
+  /// connectivity (and the labels) alone.  \throws Read_error for bad data
+  std::uint64_t number_of_tetrahedra() const {
+    const auto summary = reader_.summarize_cells();
+    in_order_ = summary.only_tetrahedra_in_order;
+    return summary.tetrahedra;
+  }
 
   /// The points, the point-data arrays and `float32_points` of the file, as a mesh without
   /// tetrahedra (read in chunks: no transient copy of the whole).  \throws Memory_limit_error,
@@ -100,12 +106,16 @@ public:
     const std::uint64_t nc = reader_.number_of_cells();
     const bool with_labels = reader_.has_labels();
     const std::uint64_t chunk = chunk_;
-    const auto read = [this, nc, chunk, with_labels](Chunk* c, std::uint64_t b) {
+    const bool in_order = in_order_;
+    const auto read = [this, nc, chunk, with_labels, in_order](Chunk* c, std::uint64_t b) {
       c->tets.clear();
       c->ids.clear();
       c->labels.clear();
-      reader_.read_cells(b, (std::min)(nc, b + chunk), c->tets, c->ids, with_labels ? &c->labels : nullptr,
-                         c->skipped);
+      std::vector<int>* labels = with_labels ? &c->labels : nullptr;
+      if (in_order)
+        reader_.read_tetrahedra(b, (std::min)(nc, b + chunk), c->tets, labels);
+      else
+        reader_.read_cells(b, (std::min)(nc, b + chunk), c->tets, c->ids, labels, c->skipped);
     };
     Chunk chunks[2];
     if (nc > 0) read(&chunks[0], 0);
@@ -129,6 +139,7 @@ private:
   static constexpr std::uint64_t vertex_chunk = std::uint64_t(1) << 20;
   internal::Vtu_range_reader reader_;
   std::size_t chunk_;
+  mutable bool in_order_ = false; // set by number_of_tetrahedra()
   mutable std::map<std::string, std::size_t> skipped_;
 };
 

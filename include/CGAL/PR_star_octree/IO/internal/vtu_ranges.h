@@ -143,6 +143,53 @@ public:
     return n;
   }
 
+  /// The cells' summary from their types and offsets alone: the number of tetrahedra, and
+  /// whether every cell is a tetrahedron whose four vertices follow the previous cell's in the
+  /// connectivity (cell `i` ends at offset `4 (i + 1)`), when `read_tetrahedra()` can read them.
+  struct Cell_summary {
+    std::uint64_t tetrahedra = 0;
+    bool only_tetrahedra_in_order = false;
+  };
+  Cell_summary summarize_cells() const {
+    Cell_summary r;
+    std::ifstream in = open();
+    Cursor types(*this, in, types_, 0, nc_);
+    for (std::uint64_t i = 0; i < nc_; ++i)
+      if (types.integer() == 10) ++r.tetrahedra;
+    r.only_tetrahedra_in_order = r.tetrahedra == nc_ && offsets_.count >= nc_;
+    if (r.only_tetrahedra_in_order) {
+      Cursor offsets(*this, in, offsets_, 0, nc_);
+      long long four[4];
+      std::uint64_t i = 0;
+      for (; i + 4 <= nc_ && r.only_tetrahedra_in_order; i += 4) {
+        offsets.integers(four, 4);
+        for (int k = 0; k < 4; ++k)
+          if (four[k] < 0 || static_cast<std::uint64_t>(four[k]) != 4 * (i + k + 1))
+            r.only_tetrahedra_in_order = false;
+      }
+      for (; i < nc_ && r.only_tetrahedra_in_order; ++i)
+        if (offsets.integer() != static_cast<long long>(4 * (i + 1))) r.only_tetrahedra_in_order = false;
+    }
+    return r;
+  }
+
+  /// Reads the cells `[first, last)` of a file whose `summarize_cells()` said
+  /// `only_tetrahedra_in_order`, as `read_cells()` would (the cell index of tetrahedron `k` is
+  /// `first + k`), from the connectivity (and the labels) alone.  Throws `Read_error` for bad data
+  /// (naming the cell) or a range that is not in `[0, number_of_cells()]`, the outputs then left as
+  /// they were.
+  void read_tetrahedra(std::uint64_t first, std::uint64_t last, std::vector<std::uint64_t>& tets,
+                       std::vector<int>* labels) const {
+    const std::size_t nt = tets.size(), nl = labels ? labels->size() : 0;
+    try {
+      append_tetrahedra(first, last, tets, labels);
+    } catch (...) {
+      tets.resize(nt);
+      if (labels) labels->resize(nl);
+      throw;
+    }
+  }
+
 private:
   void append_points(std::uint64_t first, std::uint64_t last, std::vector<double>& xyz,
                      std::vector<std::vector<double>>& arrays) const {
@@ -210,22 +257,7 @@ private:
           conn.skip(static_cast<std::uint64_t>(end - cell_start));
           ++skipped[vtk_cell_type_name(t)];
         } else {
-          std::array<std::uint64_t, 4> v;
-          long long four[4];
-          conn.integers(four, 4);
-          for (int j = 0; j < 4; ++j) {
-            std::uint64_t& x = v[j];
-            const long long k = four[j];
-            if (k < 0 || static_cast<unsigned long long>(k) >= nv_)
-              fail_cells("cell " + std::to_string(i) + ": vertex index " + std::to_string(k) +
-                         " out of range (0-based, " + std::to_string(nv_) + " points)");
-            x = static_cast<std::uint64_t>(k);
-          }
-          std::uint64_t twice;
-          if (has_repeated_vertex(v, twice))
-            fail_cells("cell " + std::to_string(i) + ": vertex index " + std::to_string(twice) +
-                       " listed twice");
-          tets.insert(tets.end(), v.begin(), v.end());
+          append_tetrahedron(conn, i, tets);
           cell_ids.push_back(i);
           if (label_values) labels->push_back(static_cast<int>(label));
         }
@@ -233,6 +265,45 @@ private:
       }
       start = prev;
       b = e;
+    }
+  }
+
+  // The next four values of `conn`, the vertices of the tetrahedron of cell `i`, checked and
+  // appended to `tets`.
+  template <class Cursor>
+  void append_tetrahedron(Cursor& conn, std::uint64_t i, std::vector<std::uint64_t>& tets) const {
+    std::array<std::uint64_t, 4> v;
+    long long four[4];
+    conn.integers(four, 4);
+    for (int j = 0; j < 4; ++j) {
+      const long long k = four[j];
+      if (k < 0 || static_cast<unsigned long long>(k) >= nv_)
+        fail_cells("cell " + std::to_string(i) + ": vertex index " + std::to_string(k) +
+                   " out of range (0-based, " + std::to_string(nv_) + " points)");
+      v[j] = static_cast<std::uint64_t>(k);
+    }
+    std::uint64_t twice;
+    if (has_repeated_vertex(v, twice))
+      fail_cells("cell " + std::to_string(i) + ": vertex index " + std::to_string(twice) + " listed twice");
+    tets.insert(tets.end(), v.begin(), v.end());
+  }
+
+  void append_tetrahedra(std::uint64_t first, std::uint64_t last, std::vector<std::uint64_t>& tets,
+                         std::vector<int>* labels) const {
+    check_range("cells", first, last, nc_);
+    if (first == last) return;
+    if (4 * last > connectivity_.count)
+      fail_cells("cell " + std::to_string(last - 1) + " ends at " + std::to_string(4 * last) +
+                 ", beyond the connectivity (" + std::to_string(connectivity_.count) + " entries)");
+    std::ifstream in = open();
+    Cursor conn(*this, in, connectivity_, 4 * first, 4 * last);
+    std::unique_ptr<Cursor> label_values;
+    if (labels != nullptr && has_labels_)
+      label_values = std::make_unique<Cursor>(*this, in, label_array_, first, last);
+    tets.reserve(tets.size() + 4 * (last - first));
+    for (std::uint64_t i = first; i < last; ++i) {
+      append_tetrahedron(conn, i, tets);
+      if (label_values) labels->push_back(static_cast<int>(label_values->real()));
     }
   }
 
