@@ -14,6 +14,7 @@
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/IO/internal/vtu_ranges.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
+#include <CGAL/PR_star_octree/internal/huge_pages.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -74,9 +75,12 @@ public:
     internal::check_memory(reader_.file(), reader_.piece_line(), nv, reader_.number_of_cells(),
                            sizeof(Indexed_tetrahedral_mesh<>::Point_3), 8, reader_.point_array_names().size(),
                            reader_.has_labels() ? 1 : 0);
-    mesh.points.reserve(static_cast<std::size_t>(nv));
+    PR_star_octree::internal::reserve_huge(mesh.points, static_cast<std::size_t>(nv));
     const std::vector<std::string>& names = reader_.point_array_names();
-    for (const std::string& name : names) mesh.point_data.push_back({name, {}});
+    for (const std::string& name : names) {
+      mesh.point_data.push_back({name, {}});
+      PR_star_octree::internal::reserve_huge(mesh.point_data.back().values, static_cast<std::size_t>(nv));
+    }
     std::vector<double> xyz;
     std::vector<std::vector<double>> arrays(names.size());
     for (std::uint64_t b = 0; b < nv; b += vertex_chunk) {

@@ -10,6 +10,7 @@
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/internal/concurrency.h>
+#include <CGAL/PR_star_octree/internal/huge_pages.h>
 
 #include <atomic>
 #include <bitset>
@@ -125,15 +126,15 @@ void PR_star_octree_3<GT, I>::copy_input(const InputMesh& input) {
   const std::size_t nv = input.number_of_vertices();
   const std::size_t nt = input.number_of_tetrahedra();
   check_sizes(nv, nt);
-  points_.reserve(nv);
+  PR_star_octree::internal::reserve_huge(points_, nv);
   for (std::size_t i = 0; i < nv; ++i) points_.push_back(convert_point(input.point(i)));
   input_float32_ = PR_star_octree::internal::input_has_float32_points(input);
   if (input.has_scalar_field()) {
     has_scalar_ = true;
-    scalars_.resize(nv);
+    PR_star_octree::internal::resize_huge(scalars_, nv);
     for (std::size_t i = 0; i < nv; ++i) scalars_[i] = static_cast<double>(input.scalar(i));
   }
-  tetrahedra_.resize(nt);
+  PR_star_octree::internal::resize_huge(tetrahedra_, nt);
   for (std::size_t t = 0; t < nt; ++t) {
     const auto c = input.tetrahedron(t);
     Tetrahedron& r = tetrahedra_[t];
@@ -323,13 +324,15 @@ std::vector<I> PR_star_octree_3<GT, I>::build_vertices() {
   }
 
   // 2. PR split of the vertices, depth first: `order[new] = original`; V re-indexed in place.
-  std::vector<Index> order(nv);
+  std::vector<Index> order;
+  PR_star_octree::internal::resize_huge(order, nv);
   std::iota(order.begin(), order.end(), Index(0));
   split_vertices<ConcurrencyTag>(order);
   // V and the scalars are gathered into new arrays (one at a time): random reads but sequential
   // writes, much faster than following the cycles of `order` in place, for a transient |V| points.
   const auto gather = [&](auto& a) {
-    std::remove_reference_t<decltype(a)> g(a.size());
+    std::remove_reference_t<decltype(a)> g;
+    PR_star_octree::internal::resize_huge(g, a.size());
     for_each_block<ConcurrencyTag>(a.size(), 1 << 14, [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i) g[i] = a[order[i]];
     });
@@ -340,7 +343,8 @@ std::vector<I> PR_star_octree_3<GT, I>::build_vertices() {
   else
     gather(points_);
   if (has_scalar_) gather(scalars_);
-  std::vector<Index> from_original(nv);
+  std::vector<Index> from_original;
+  PR_star_octree::internal::resize_huge(from_original, nv);
   for_each_block<ConcurrencyTag>(nv, 1 << 14, [&](std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) from_original[order[i]] = static_cast<Index>(i);
   });
@@ -391,7 +395,8 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
   std::vector<Index> from_original = build_vertices<ConcurrencyTag>();
 
   // Pass 2: counts by smallest vertex (new numbering) and the bytes of the records.
-  std::vector<Index> first(nv + 1, 0);
+  std::vector<Index> first;
+  PR_star_octree::internal::assign_huge(first, nv + 1, Index(0));
   std::size_t bytes = 0, seen = 0;
   const auto changed = [&]() {
     return std::invalid_argument(
@@ -429,8 +434,8 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
     first[v] = static_cast<Index>(sum);
     sum += c;
   }
-  if (has_labels_) labels_.assign(nt, 0);
-  reoriented_.assign((nt + 63) / 64, 0);
+  if (has_labels_) PR_star_octree::internal::assign_huge(labels_, nt, 0);
+  PR_star_octree::internal::assign_huge(reoriented_, (nt + 63) / 64, std::uint64_t(0));
 
   // Passes 3...: the slabs, cut where the tetrahedra of the smallest vertices reach equal parts
   // of T (a slab is its part and at most the star of one vertex more): |T| / slab_tetrahedra of
@@ -448,7 +453,7 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
     while (ve < nv && first[ve] < target) ++ve;
     const std::size_t tb = first[vb], te = first[ve];
     if (te > tb) {
-      buffer.resize(te - tb);
+      PR_star_octree::internal::resize_huge(buffer, te - tb);
       cursor.assign(first.begin() + vb, first.begin() + ve);
       source.for_each_chunk([&](const std::uint64_t* v, const int* labels, std::size_t n) {
         for (std::size_t i = 0; i < n; ++i) {
@@ -507,7 +512,7 @@ template <class ConcurrencyTag>
 void PR_star_octree_3<GT, I>::to_float() {
   constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
   std::atomic<std::size_t> overflow{none};
-  float_points_.resize(points_.size());
+  PR_star_octree::internal::resize_huge(float_points_, points_.size());
   PR_star_octree::internal::for_each_block<ConcurrencyTag>(
       points_.size(), 1 << 14, [&](std::size_t b, std::size_t e) {
         for (std::size_t i = b; i < e; ++i) {
@@ -550,7 +555,7 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
                                   std::vector<Index>& buffer, std::vector<unsigned char>& code) {
     const std::size_t count = e - b;
     const std::array<double, 3> mid = center(lo, hi);
-    code.resize(count);
+    PR_star_octree::internal::resize_huge(code, count);
     start.fill(0);
     for (std::size_t i = 0; i < count; ++i) {
       const unsigned c = octant(stored_coordinates(order[b + i]), mid);
@@ -558,7 +563,7 @@ void PR_star_octree_3<GT, I>::split_vertices(std::vector<Index>& order) {
       ++start[c + 1];
     }
     for (int c = 0; c < 8; ++c) start[c + 1] += start[c];
-    buffer.resize(count);
+    PR_star_octree::internal::resize_huge(buffer, count);
     std::array<std::size_t, 8> pos;
     std::copy(start.begin(), start.begin() + 8, pos.begin());
     for (std::size_t i = 0; i < count; ++i) buffer[pos[code[i]]++] = order[b + i];
@@ -674,7 +679,7 @@ void PR_star_octree_3<GT, I>::sort_and_orient_tetrahedra(const std::vector<Index
   // to the user's numbering (when kept) moved along.
   std::vector<Index> perm;
   if (keep_tetrahedron_permutation_) {
-    perm.resize(nt);
+    PR_star_octree::internal::resize_huge(perm, nt);
     std::iota(perm.begin(), perm.end(), Index(0));
   }
   {
@@ -735,7 +740,8 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
     for (std::size_t t = b; t < e; ++t, ++cursor) f(t, *cursor);
   };
   const std::size_t nl = leaves_.size();
-  std::vector<Index> leaf_of(nv); // position of the leaf in `leaves_`
+  std::vector<Index> leaf_of; // position of the leaf in `leaves_`
+  PR_star_octree::internal::resize_huge(leaf_of, nv);
   for (std::size_t l = 0; l < nl; ++l) {
     const Node& nd = nodes_[leaves_[l]];
     std::fill(leaf_of.begin() + nd.vertex_begin, leaf_of.begin() + nd.vertex_end, static_cast<Index>(l));
@@ -838,8 +844,8 @@ void PR_star_octree_3<GT, I>::build_leaf_lists() {
     for (std::size_t l = lb; l < le; ++l) for_each_group(l, [&](std::size_t) { ++groups[l + 1]; });
   });
   for (std::size_t l = 0; l < nl; ++l) groups[l + 1] += groups[l];
-  leaf_offsets_.resize(total);
-  leaf_groups_.resize(groups[nl]);
+  PR_star_octree::internal::resize_huge(leaf_offsets_, total);
+  PR_star_octree::internal::resize_huge(leaf_groups_, groups[nl]);
   PR_star_octree::internal::for_each_block<ConcurrencyTag>(nl, 1024, [&](std::size_t lb, std::size_t le) {
     for (std::size_t l = lb; l < le; ++l) {
       Node& nd = nodes_[leaves_[l]];

@@ -21,6 +21,7 @@
 //   tetrahedron `t` is found by skipping at most `block_size - 1` records.
 // A cursor decodes consecutive tetrahedra in one pass.
 
+#include <CGAL/PR_star_octree/internal/huge_pages.h>
 #include <CGAL/assertions.h>
 
 #include <algorithm>
@@ -69,7 +70,7 @@ public:
     std::vector<unsigned char>().swap(bytes_);
     blocks_.clear();
     big_counts_.clear();
-    counts_.assign(nv, 0);
+    assign_huge(counts_, nv, static_cast<unsigned char>(0));
     std::vector<std::pair<Index, std::size_t>> big; // vertices owning 255 or more tetrahedra
     Index current = 0;
     std::size_t rank = 0, total = 0;
@@ -96,7 +97,8 @@ public:
       std::uint64_t d[3];
       total += record_length_[encode(c, d)];
     }
-    bytes_.resize(total + 8, 0); // 8 bytes of padding: a difference is always read as one 8-byte load
+    // 8 bytes of padding: a difference is always read as one 8-byte load
+    resize_huge(bytes_, total + 8, static_cast<unsigned char>(0));
     unsigned char* out = bytes_.data();
     for (std::size_t t = 0; t < nt; ++t) {
       std::uint64_t d[3];
@@ -124,7 +126,7 @@ public:
     std::vector<unsigned char>().swap(bytes_);
     blocks_.clear();
     big_counts_.clear();
-    counts_.assign(nv, 0);
+    assign_huge(counts_, nv, static_cast<unsigned char>(0));
     std::size_t sum = 0;
     for (std::size_t v = 0; v < nv; ++v) {
       const std::size_t c = static_cast<std::size_t>(counts[v]);
@@ -137,7 +139,7 @@ public:
       }
     }
     if (sum != nt) throw std::invalid_argument("Compact_tetrahedra::start: the counts do not add up to nt");
-    bytes_.resize(total_bytes + 8, 0);
+    resize_huge(bytes_, total_bytes + 8, static_cast<unsigned char>(0));
     blocks_.resize(nt / block_size + (nt % block_size != 0 ? 1 : 0));
     stream_ = Stream{};
   }

@@ -18,6 +18,7 @@
 #include <CGAL/PR_star_octree/IO/internal/vtk_cells.h>
 #include <CGAL/PR_star_octree/IO/internal/vtu_reader.h>
 #include <CGAL/PR_star_octree/IO/internal/xml.h>
+#include <CGAL/PR_star_octree/internal/huge_pages.h>
 
 #include <algorithm>
 #include <array>
@@ -409,7 +410,7 @@ private:
         if (next_ >= last_) // a caller error: more values taken than the range holds
           throw std::logic_error("Vtu_range_reader: read past the range of " + a_.what);
         const std::uint64_t n = std::min(chunk, last_ - next_);
-        buffer_.resize(static_cast<std::size_t>(n) * a_.size);
+        PR_star_octree::internal::resize_huge(buffer_, static_cast<std::size_t>(n) * a_.size);
         const std::uint64_t at = a_.data + next_ * a_.size;
         in_.clear();
         in_.seekg(static_cast<std::streamoff>(at));
