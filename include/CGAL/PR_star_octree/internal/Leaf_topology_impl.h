@@ -62,9 +62,7 @@ template <class Octree>
 template <class Tetrahedra>
 void Leaf_topology<Octree>::build_faces(const Tetrahedra& T, bool adjacency, bool triangles) {
   const auto tets = tetrahedra();
-  faces_.build(T, tets, [this](const std::array<Index, 3>& f) {
-    return is_local_vertex(f[0]) || is_local_vertex(f[1]) || is_local_vertex(f[2]);
-  });
+  faces_.build(T, tets, vb_, ve_);
   if (adjacency)
     tt_.assign(tets.size(), std::array<Index, 4>{
                                 {unknown_neighbor, unknown_neighbor, unknown_neighbor, unknown_neighbor}});

@@ -443,17 +443,28 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
   const std::size_t per_slab = slab_tetrahedra_ > 0 ? slab_tetrahedra_ : std::size_t(1) << 20;
   std::size_t slabs = (std::max)(std::size_t(1), (nt + per_slab - 1) / per_slab);
   if (slab_tetrahedra_ == 0) slabs = (std::min)(slabs, std::size_t(6));
-  std::vector<Tetrahedron> buffer;
-  std::vector<Index> cursor;
-  std::atomic<std::size_t> degenerate{0};
+  // The slabs' first vertices, cut first so that the buffer is allocated once, at the largest
+  // slab (growing it from one slab to the next held two buffers at once, for a copy).
+  std::vector<std::size_t> cuts{0};
+  std::size_t largest = 0;
   for (std::size_t vb = 0, s = 1; vb < nv; ++s) {
     // the part ends at the s-th of `slabs` equal parts of T (nt * s / slabs without overflow)
     const std::size_t target = s >= slabs ? nt : nt / slabs * s + nt % slabs * s / slabs;
     std::size_t ve = vb + 1;
     while (ve < nv && first[ve] < target) ++ve;
+    largest = (std::max)(largest, std::size_t(first[ve] - first[vb]));
+    cuts.push_back(ve);
+    vb = ve;
+  }
+  std::vector<Tetrahedron> buffer;
+  PR_star_octree::internal::reserve_huge(buffer, largest);
+  std::vector<Index> cursor;
+  std::atomic<std::size_t> degenerate{0};
+  for (std::size_t s = 0; s + 1 < cuts.size(); ++s) {
+    const std::size_t vb = cuts[s], ve = cuts[s + 1];
     const std::size_t tb = first[vb], te = first[ve];
     if (te > tb) {
-      PR_star_octree::internal::resize_huge(buffer, te - tb);
+      buffer.resize(te - tb);
       cursor.assign(first.begin() + vb, first.begin() + ve);
       source.for_each_chunk([&](const std::uint64_t* v, const int* labels, std::size_t n) {
         for (std::size_t i = 0; i < n; ++i) {
@@ -487,7 +498,6 @@ void PR_star_octree_3<GT, I>::build_streaming(const TetrahedronSource& source) {
       });
       compact_tetrahedra_.append(buffer.data(), buffer.size());
     }
-    vb = ve;
   }
   compact_tetrahedra_.finish();
   std::vector<Tetrahedron>().swap(buffer);

@@ -146,22 +146,69 @@ public:
     bool operator<(const Record& o) const { return std::tie(v, local) < std::tie(o.v, o.local); }
   };
 
-  // Collects the faces of the tetrahedra `list[i]` of `T` that `keep(face)` accepts (a face given
-  // by its three vertices, unsorted), then sorts them.
-  template <class Tetrahedra, class List, class Keep>
-  void build(const Tetrahedra& T, const List& list, Keep keep) {
+  // Collects the faces of the tetrahedra `list[i]` of `T` that have a vertex in `[vb, ve)`, sorted
+  // by `Record::operator<`.  Such a face's smallest vertex is below `ve`: the faces whose smallest
+  // vertex is below `vb` (those of the tetrahedra shared with earlier leaves, the fewer) are sorted
+  // as they are; the others are placed by their smallest vertex (a counting sort, stable) and each
+  // vertex's few are then sorted by their other two vertices (stably: ties stay in list order).  The
+  // result is the order of one sort of all the records, in a fraction of its time.
+  template <class Tetrahedra, class List>
+  void build(const Tetrahedra& T, const List& list, Index vb, Index ve) {
+    const std::size_t n = static_cast<std::size_t>(ve - vb);
     records_.clear();
-    std::size_t i = 0;
+    local_.clear();
+    counts_.assign(n + 1, 0);
+    Index i = 0;
     for (auto it = list.begin(); it != list.end(); ++it, ++i) {
       const auto& c = T[*it];
-      for (int k = 0; k < 4; ++k) {
-        std::array<Index, 3> f{{c[(k + 1) & 3], c[(k + 2) & 3], c[(k + 3) & 3]}};
-        if (!keep(f)) continue;
-        std::sort(f.begin(), f.end());
-        records_.push_back(Record{f, static_cast<Index>(i), k});
+      // the four vertices sorted, with their positions in the tetrahedron
+      std::array<Index, 4> s{{c[0], c[1], c[2], c[3]}};
+      std::array<int, 4> p{{0, 1, 2, 3}};
+      for (int a = 1; a < 4; ++a)
+        for (int b = a; b > 0 && s[b] < s[b - 1]; --b) {
+          std::swap(s[b], s[b - 1]);
+          std::swap(p[b], p[b - 1]);
+        }
+      unsigned in_leaf = 0;
+      for (int a = 0; a < 4; ++a) in_leaf |= unsigned(vb <= s[a] && s[a] < ve) << a;
+      for (int j = 0; j < 4; ++j) { // the face opposite the j-th smallest vertex, sorted
+        if ((in_leaf & ~(1u << j)) == 0) continue;
+        const Record r{{{s[j == 0 ? 1 : 0], s[j <= 1 ? 2 : 1], s[j <= 2 ? 3 : 2]}}, i, p[j]};
+        if (r.v[0] < vb) {
+          records_.push_back(r);
+        } else {
+          local_.push_back(r);
+          ++counts_[r.v[0] - vb + 1];
+        }
       }
     }
     std::sort(records_.begin(), records_.end());
+    const std::size_t shared = records_.size();
+    for (std::size_t a = 0; a < n; ++a) counts_[a + 1] += counts_[a];
+    records_.resize(shared + local_.size());
+    Record* out = records_.data() + shared;
+    for (const Record& r : local_) out[counts_[r.v[0] - vb]++] = r; // counts_[a]: now the end of a
+    const auto by_other_two = [](const Record& x, const Record& y) {
+      return x.v[1] < y.v[1] || (x.v[1] == y.v[1] && x.v[2] < y.v[2]);
+    };
+    for (std::size_t a = 0, b = 0; a < n; b = counts_[a++]) {
+      Record* first = out + b;
+      Record* last = out + counts_[a];
+      if (last - first > 64) {
+        std::stable_sort(first, last, by_other_two);
+        continue;
+      }
+      for (Record* x = first + 1; x < last; ++x) { // insertion sort: stable
+        if (!by_other_two(*x, *(x - 1))) continue;
+        const Record r = *x;
+        Record* y = x;
+        do {
+          *y = *(y - 1);
+          --y;
+        } while (y > first && by_other_two(r, *(y - 1)));
+        *y = r;
+      }
+    }
   }
 
   // Calls `f(first, last)` with the records of each triangle.
@@ -171,10 +218,14 @@ public:
         records_.begin(), records_.end(), [](const Record& a, const Record& b) { return a.v == b.v; }, f);
   }
 
-  std::size_t capacity_bytes() const { return records_.capacity() * sizeof(Record); }
+  std::size_t capacity_bytes() const {
+    return (records_.capacity() + local_.capacity()) * sizeof(Record) +
+           counts_.capacity() * sizeof(std::size_t);
+  }
 
 private:
-  std::vector<Record> records_;
+  std::vector<Record> records_, local_;
+  std::vector<std::size_t> counts_;
 };
 
 // ---------------------------------------------------------------------------------------------
