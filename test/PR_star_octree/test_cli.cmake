@@ -192,6 +192,18 @@ run(0 "\"interior_vertices\": 125," "" boundary ${WORK}/lattice.vtu --max-memory
 run(1 "" "lattice.vtu:[0-9]+: the mesh announced \\(343 vertices, 1296 tetrahedra\\) needs about .*--max-memory"
     boundary ${WORK}/lattice.vtu --compact --max-memory 10K)
 run(0 "\"interior_vertices\": 125," "" boundary ${WORK}/lattice.vtu --compact --max-memory 1M --json)
+if(NOT last_out MATCHES "\"compact_tetrahedra\": true, \"streamed\": true,")
+  message(SEND_ERROR "boundary --compact on an appended .vtu: expected it streamed in ${last_out}")
+endif()
+# by default, a file this small (under 2^25 cells) is built in place, plain; --no-compact never
+# streams; the two flags together are refused
+foreach(flag "" --no-compact)
+  run(0 "\"interior_vertices\": 125," "" boundary ${WORK}/lattice.vtu ${flag} --json)
+  if(NOT last_out MATCHES "\"compact_tetrahedra\": false, \"streamed\": false,")
+    message(SEND_ERROR "boundary ${flag}: expected the plain array, in place, in ${last_out}")
+  endif()
+endforeach()
+run(2 "" "--compact and --no-compact cannot both be given" boundary ${WORK}/lattice.vtu --compact --no-compact)
 run(0 "\"interior_vertices\": 125," "" boundary ${WORK}/lattice.vtu --max-memory unlimited --json)
 run(2 "" "--max-memory: '12X' is not a size" stats ${WORK}/lattice.vtu --max-memory 12X)
 run(2 "" "--threads must be a positive integer" stats ${WORK}/lattice.vtu --threads 0)

@@ -26,7 +26,8 @@ namespace prstar {
 
 // The summary of the boundary command (one process or distributed): JSON or a table.
 void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
-                     const CGAL::PR_star_octree::Boundary_counts& b, double seconds, long long interfaces) {
+                     const CGAL::PR_star_octree::Boundary_counts& b, double seconds, long long interfaces,
+                     bool compact, bool streamed) {
   const std::string& input = o.input();
   const std::string out = o.output(), surface = o.output("--surface");
   if (o.json()) {
@@ -40,6 +41,8 @@ void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
         .field("boundary_triangles", b.boundary_triangles)
         .field("boundary_tetrahedra", b.boundary_tetrahedra)
         .field("boundary_face_tetrahedra", b.boundary_face_tetrahedra)
+        .field("compact_tetrahedra", compact)
+        .field("streamed", streamed)
         .field("seconds", seconds);
     if (interfaces >= 0) j.field("interface_triangles", interfaces);
     if (!out.empty()) j.field("output", out);
@@ -58,7 +61,12 @@ void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
   if (interfaces >= 0) t.add({"triangles between two labels", std::to_string(interfaces)});
   t.add({"tetrahedra touching the boundary", std::to_string(b.boundary_tetrahedra)});
   t.add({"  with a boundary face", std::to_string(b.boundary_face_tetrahedra)});
-  std::cout << input << " (k_v = " << o.kv_label() << ", " << fixed(seconds, 3) << " s)\n" << t.str();
+  std::cout << input << " (k_v = " << o.kv_label()
+            << (streamed  ? ", compact tetrahedra, read in passes"
+                : compact ? ", compact tetrahedra"
+                          : "")
+            << ", " << fixed(seconds, 3) << " s)\n"
+            << t.str();
   if (b.nonmanifold_vertices)
     std::cout << "warning: " << b.nonmanifold_vertices
               << " vertices have a link that is neither a sphere nor a disc (non-manifold)\n";
@@ -149,12 +157,23 @@ int run_boundary(const Options& o) {
   const std::string out = o.output(), surface_out = o.output("--surface");
   Progress_bar progress(o.show_progress());
   const bool writes = !out.empty() || !surface_out.empty();
-  // --compact on a .vtu readable by ranges, nothing written: the streaming construction, which never
-  // holds the plain tetrahedron array (the tetrahedra are read from the file several times)
+  // A .vtu readable by ranges, nothing written, with --compact or by default from 2^25 cells: the
+  // streaming construction, which never holds the plain tetrahedron array (the tetrahedra are read
+  // from the file several times).  By default, a header the ranges cannot read leaves the file to
+  // the whole-file reader (and its messages).
   std::optional<PIO::Vtu_tetrahedron_source> streaming;
-  if (o.compact() && !writes && PIO::internal::lower_extension(input) == "vtu") {
-    streaming.emplace(input);
-    if (!streaming->supported()) streaming.reset();
+  if (o.compact_choice() != Options::Compact::no && !writes &&
+      PIO::internal::lower_extension(input) == "vtu") {
+    if (o.compact_choice() == Options::Compact::yes) {
+      streaming.emplace(input);
+    } else {
+      try {
+        streaming.emplace(input);
+      } catch (const std::exception&) {
+        streaming.reset();
+      }
+    }
+    if (streaming && (!streaming->supported() || !o.stream(streaming->number_of_cells()))) streaming.reset();
   }
   if (streaming) progress.phase("reading the vertices of " + input);
   Mesh mesh = streaming ? streaming->read_vertices() : read_mesh(input, progress);
@@ -205,7 +224,8 @@ int run_boundary(const Options& o) {
     write_octree_mesh(out, view, result);
     progress.finish();
   }
-  report_boundary(o, nv, nt, b, seconds, surface_out.empty() ? -1 : static_cast<long long>(interfaces));
+  report_boundary(o, nv, nt, b, seconds, surface_out.empty() ? -1 : static_cast<long long>(interfaces),
+                  tree.is_compact(), streaming.has_value());
   return exit_success;
 }
 
@@ -218,9 +238,11 @@ Command boundary_command() {
       .description(
           R"(Classifies every vertex of MESH as interior, boundary or non-manifold, leaf by leaf (paper
 Section 7: 2|e| != 3|t| in the vertex link, plus a check that the link is a sphere or a disc).
-With --compact and neither OUT nor SURF, a .vtu whose arrays are appended raw (as prstar generate
-writes them) is read in passes, the tetrahedra a slab at a time: the plain tetrahedron array
-(16 bytes each) is never held whole.)")
+With neither OUT nor SURF, a .vtu whose arrays are appended raw (as prstar generate writes them)
+and that has 2^25 cells or more (any size with --compact; never with --no-compact) is read in
+passes, the tetrahedra a slab at a time, into the compact array: the plain tetrahedron array
+(16 bytes each) is never held whole.  The 105M-tetrahedra lattice then peaks at about 1.5 GB
+instead of 2.6, in the same time.)")
       .kv()
       .max_depth()
       .output("OUT", point_data_outputs(),
@@ -236,7 +258,8 @@ writes them) is read in passes, the tetrahedra a slab at a time: the plain tetra
       .json_keys("keys: vertices, tetrahedra, kv, kv_automatic, boundary_vertices, interior_vertices,\n"
                  "nonmanifold_vertices, unreferenced_vertices, boundary_triangles, boundary_tetrahedra\n"
                  "(tetrahedra with a boundary or non-manifold vertex), boundary_face_tetrahedra (with a\n"
-                 "face on the boundary), interface_triangles (with --surface), seconds, output, surface")
+                 "face on the boundary), compact_tetrahedra, streamed (read in passes), interface_triangles\n"
+                 "(with --surface), seconds, output, surface")
       .run(run_boundary);
 }
 

@@ -43,7 +43,10 @@ const char* const help_kv_list = "bucket thresholds k_v of the octree: positive 
                                  "auto (chosen from the mesh), comma-separated, one row each";
 const std::string help_compact =
     "store the octree's tetrahedra compactly: about 5 bytes each instead of 16, the same results;\n"
-    "each leaf decodes its tetrahedra once (see `prstar stats` for the bytes per tetrahedron)";
+    "each leaf decodes its tetrahedra once (see `prstar stats` for the bytes per tetrahedron).\n"
+    "Default: compact where the command builds by streaming from a .vtu of 2^25 cells or more\n"
+    "(boundary with no output), plain elsewhere";
+const char* const help_no_compact = "store the plain tetrahedron array (four indices each), never streaming";
 const char* const help_coordinates =
     "how the octree stores the coordinates: as the file has them (default: 32-bit floats\n"
     "for a Float32 VTK file, a .meshb of version 1, ...), float32 (12 bytes per vertex,\n"
@@ -253,7 +256,7 @@ std::string Command::usage_line() const {
     for (const Declared& d : specific_)
       u += " [" + d.name + (d.value_name.empty() ? "" : " " + d.value_name) + "]";
   if (has_kv_) u += kv_list_ ? " [--kv N|inf|auto[,N...]]" : " [--kv N|inf|auto]";
-  if (has_max_depth_) u += " [--max-depth D] [--compact] [--coordinates input|float32|double]";
+  if (has_max_depth_) u += " [--max-depth D] [--compact|--no-compact] [--coordinates input|float32|double]";
   if (!input_.empty()) u += " [--threads N] [--max-memory SIZE]";
   for (const Output_decl& o : outputs_) {
     if (o.option.empty() && output_positional_) continue; // in the synopsis
@@ -274,6 +277,7 @@ std::string Command::help() const {
   if (has_max_depth_) {
     lines.push_back({"--max-depth D", help_max_depth});
     lines.push_back({"--compact", help_compact});
+    lines.push_back({"--no-compact", help_no_compact});
     lines.push_back({"--coordinates input|float32|double", help_coordinates});
   }
   if (!input_.empty()) {
@@ -309,6 +313,7 @@ Options Command::parse(int argc, char** argv, int first, bool distributed) const
   if (has_max_depth_) {
     values.push_back("--max-depth");
     flags.push_back("--compact");
+    flags.push_back("--no-compact");
     values.push_back("--coordinates");
   }
   if (!input_.empty()) {
@@ -355,7 +360,10 @@ Options Command::parse(int argc, char** argv, int first, bool distributed) const
     if (depth < 1 || depth > 64 || depth != std::floor(depth))
       throw Usage_error("--max-depth must be in 1..64");
     o.max_depth_ = static_cast<std::size_t>(depth);
-    o.compact_ = args.flag("--compact");
+    if (args.flag("--compact") && args.flag("--no-compact"))
+      throw Usage_error("--compact and --no-compact cannot both be given");
+    if (args.flag("--compact")) o.compact_ = Options::Compact::yes;
+    if (args.flag("--no-compact")) o.compact_ = Options::Compact::no;
     if (args.has("--coordinates")) {
       const std::string c = args.get("--coordinates");
       using CGAL::PR_star_octree::Coordinate_precision;

@@ -17,6 +17,7 @@
 #include <CGAL/PR_star_octree/parameters.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <iosfwd>
 #include <string>
@@ -151,8 +152,21 @@ public:
   std::string kv_label() const;
   std::size_t used_kv() const { return used_kv_ ? used_kv_ : kv(); }
   bool used_kv_automatic() const { return used_kv_automatic_; }
-  /// --compact: the octree stores its tetrahedra compactly (named parameter `compact_tetrahedra`)
-  bool compact() const { return compact_; }
+  /// --compact / --no-compact / neither: the octree's tetrahedra compact (named parameter
+  /// `compact_tetrahedra`), plain, or chosen by the command (the default)
+  enum class Compact { automatic, yes, no };
+  Compact compact_choice() const { return compact_; }
+  /// The tetrahedra stored compactly by a construction in place: only when --compact is given (in
+  /// place, the peak is the construction's whatever the storage, and the plain array is faster).
+  bool compact() const { return compact_ == Compact::yes; }
+  /// The number of cells from which a command that can build by streaming (the compact array,
+  /// never the plain one whole) does so by default: at 50M tetrahedra the streaming build took
+  /// 0.6x the memory in 0.9-1.2x the time, at 3M 1.4x the time (results/compact.md).
+  static constexpr std::uint64_t streaming_cells = std::uint64_t(1) << 25;
+  /// Whether a command that can build by streaming from a file of `cells` cells should.
+  bool stream(std::uint64_t cells) const {
+    return compact_ == Compact::yes || (compact_ == Compact::automatic && cells >= streaming_cells);
+  }
   /// --coordinates: how the octree stores the coordinates (named parameter `coordinate_precision`)
   CGAL::PR_star_octree::Coordinate_precision coordinate_precision() const { return precision_; }
   /// An output file, empty when not given: `output()` is -o/--output, `output("--csv")` another.
@@ -191,7 +205,8 @@ private:
   std::vector<std::size_t> kvs_;
   std::size_t max_depth_ = 0, threads_ = 0, max_memory_ = 0;
   std::vector<std::pair<std::string, std::string>> outputs_;
-  bool force_ = false, json_ = false, quiet_ = false, quiet_silences_summary_ = false, compact_ = false;
+  bool force_ = false, json_ = false, quiet_ = false, quiet_silences_summary_ = false;
+  Compact compact_ = Compact::automatic;
   CGAL::PR_star_octree::Coordinate_precision precision_ =
       CGAL::PR_star_octree::Coordinate_precision::as_input;
   mutable std::size_t used_kv_ = 0;

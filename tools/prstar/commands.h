@@ -98,10 +98,12 @@ void write_curvature_csv(const std::string& csv, std::size_t n,
 
 /// The summaries printed by boundary, curvature and validate, on one process and distributed (the
 /// same text and JSON keys; cmd_boundary.cpp, cmd_curvature.cpp, cmd_validate.cpp).
-/// `interfaces`: the number of triangles between two labels (-1: not computed, not reported)
+/// `interfaces`: the number of triangles between two labels (-1: not computed, not reported);
+/// `compact`: the octree's tetrahedra were compact, `streamed`: read in passes (a distributed
+/// octree holds its parts plain)
 void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
                      const CGAL::PR_star_octree::Boundary_counts& b, double seconds,
-                     long long interfaces = -1);
+                     long long interfaces = -1, bool compact = false, bool streamed = false);
 void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const std::string& field_name,
                       const Curvature_summary& summary, double seconds);
 /// `problems`: the list of `check_validity()`'s `problems_output` (one process), or null (distributed:
