@@ -164,14 +164,10 @@ int run_boundary(const Options& o) {
   std::optional<PIO::Vtu_tetrahedron_source> streaming;
   if (o.compact_choice() != Options::Compact::no && !writes &&
       PIO::internal::lower_extension(input) == "vtu") {
-    if (o.compact_choice() == Options::Compact::yes) {
+    try {
       streaming.emplace(input);
-    } else {
-      try {
-        streaming.emplace(input);
-      } catch (const std::exception&) {
-        streaming.reset();
-      }
+    } catch (const std::exception&) {
+      if (o.compact_choice() == Options::Compact::yes) throw;
     }
     if (streaming && (!streaming->supported() || !o.stream(streaming->number_of_cells()))) streaming.reset();
   }
