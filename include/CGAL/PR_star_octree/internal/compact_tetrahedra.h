@@ -17,9 +17,11 @@
 //   control byte give the position of the smallest vertex `m`, bits 2-7 the byte lengths of the
 //   differences `x - m - 1` of the three others, taken cyclically after `m`;
 // - every `block_size` tetrahedra, an entry of `blocks` holds the byte offset of the block, its
-//   first smallest vertex and how many tetrahedra of that vertex come before the block, so that
-//   tetrahedron `t` is found by skipping at most `block_size - 1` records.
-// A cursor decodes consecutive tetrahedra in one pass.
+//   first smallest vertex and how many tetrahedra of that vertex come before the block, and `steps`
+//   the byte lengths of its first three runs of `step_size` records (the vertex at the start of a
+//   run follows from `counts`), so that tetrahedron `t` is found by skipping at most
+//   `step_size - 1` records.
+// A cursor decodes consecutive tetrahedra in one pass; `decode_range()` decodes a range faster.
 
 #include <CGAL/PR_star_octree/internal/huge_pages.h>
 #include <CGAL/assertions.h>
@@ -46,6 +48,10 @@ class Compact_tetrahedra {
 public:
   using Tetrahedron = std::array<Index, 4>;
   static constexpr std::size_t block_size = 64;
+  // a block's records in runs of `step_size`: the byte length of each of its first three runs is
+  // kept, so that a seek skips at most `step_size - 1` records
+  static constexpr std::size_t step_size = 16;
+  static constexpr std::size_t steps_per_block = block_size / step_size - 1;
 
   // the byte lengths of the codes 0..3 of a difference
   static constexpr unsigned length_of(unsigned code) {
@@ -69,6 +75,7 @@ public:
     size_ = nt;
     std::vector<unsigned char>().swap(bytes_);
     blocks_.clear();
+    steps_.assign(steps_per_block * (nt / block_size + (nt % block_size != 0 ? 1 : 0)), Step(0));
     big_counts_.clear();
     assign_huge(counts_, nv, static_cast<unsigned char>(0));
     std::vector<std::pair<Index, std::size_t>> big; // vertices owning 255 or more tetrahedra
@@ -103,6 +110,7 @@ public:
     for (std::size_t t = 0; t < nt; ++t) {
       std::uint64_t d[3];
       const unsigned control = encode(T[t], d);
+      note_step(t, static_cast<std::uint64_t>(out - bytes_.data()));
       *out++ = static_cast<unsigned char>(control);
       for (int k = 0; k < 3; ++k) {
         const unsigned len = length_of((control >> (2 + 2 * k)) & 3u);
@@ -141,6 +149,7 @@ public:
     if (sum != nt) throw std::invalid_argument("Compact_tetrahedra::start: the counts do not add up to nt");
     resize_huge(bytes_, total_bytes + 8, static_cast<unsigned char>(0));
     blocks_.resize(nt / block_size + (nt % block_size != 0 ? 1 : 0));
+    steps_.assign(steps_per_block * blocks_.size(), Step(0));
     stream_ = Stream{};
   }
   void append(const Tetrahedron* T, std::size_t n) {
@@ -161,6 +170,7 @@ public:
       const std::size_t len = record_length_[control];
       if (st.offset + len > bytes_.size() - 8)
         throw std::invalid_argument("Compact_tetrahedra::append: more bytes than announced");
+      note_step(st.t, st.offset);
       unsigned char* out = bytes_.data() + st.offset;
       *out++ = static_cast<unsigned char>(control);
       for (int k = 0; k < 3; ++k) {
@@ -188,7 +198,7 @@ public:
   // the bytes held (capacities)
   std::size_t memory_bytes() const {
     return bytes_.capacity() + counts_.capacity() + blocks_.capacity() * sizeof(Block) +
-           big_counts_.capacity() * sizeof(std::pair<Index, Index>);
+           steps_.capacity() * sizeof(Step) + big_counts_.capacity() * sizeof(std::pair<Index, Index>);
   }
 
   // the number of tetrahedra whose smallest vertex is `v`
@@ -209,31 +219,34 @@ public:
 
     std::size_t position() const { return t_; }
     void seek(std::size_t t) {
-      if (t_ != npos && t >= t_ && t - t_ < block_size && t_ < a_->size_ && t <= a_->size_) {
+      if (t_ != npos && t >= t_ && t - t_ < step_size && t_ < a_->size_ && t <= a_->size_) {
         skip(t - t_);
         return;
       }
       t_ = t;
       if (t >= a_->size_) return;
-      const Block& b = a_->blocks_[t / block_size];
+      const std::size_t block = t / block_size, steps = (t % block_size) / step_size;
+      const Block& b = a_->blocks_[block];
       offset_ = b.offset;
       vertex_ = b.vertex;
       rank_ = b.rank;
       t_ = t - t % block_size;
-      skip(t % block_size);
+      if (steps > 0) { // whole runs: their bytes from the steps, their vertices from the counts
+        for (std::size_t i = 0; i < steps; ++i) offset_ += a_->steps_[steps_per_block * block + i];
+        t_ += steps * step_size;
+        rank_ += steps * step_size;
+        std::size_t n;
+        while (rank_ >= (n = a_->count(vertex_))) {
+          rank_ -= n;
+          ++vertex_;
+        }
+      }
+      skip(t - t_);
     }
     // the tetrahedron at the position; \pre `position() < size()`
     Tetrahedron operator*() const {
-      const unsigned char* r = a_->bytes_.data() + offset_;
-      const unsigned control = r[0];
-      const unsigned p = control & 3u;
-      const unsigned l0 = length_of((control >> 2) & 3u), l1 = length_of((control >> 4) & 3u),
-                     l2 = length_of((control >> 6) & 3u);
       Tetrahedron c;
-      c[p] = vertex_;
-      c[(p + 1) & 3] = static_cast<Index>(vertex_ + 1 + load(r + 1, l0));
-      c[(p + 2) & 3] = static_cast<Index>(vertex_ + 1 + load(r + 1 + l0, l1));
-      c[(p + 3) & 3] = static_cast<Index>(vertex_ + 1 + load(r + 1 + l0 + l1, l2));
+      a_->decode_record(a_->bytes_.data() + offset_, vertex_, c);
       return c;
     }
     Cursor& operator++() {
@@ -245,18 +258,8 @@ public:
     }
 
   private:
+    friend class Compact_tetrahedra;
     static constexpr std::size_t npos = ~std::size_t(0);
-    // the difference of `len` bytes at `r` (the 8 bytes of padding make the 8-byte load safe)
-    static std::uint64_t load(const unsigned char* r, unsigned len) {
-      std::uint64_t d;
-      std::memcpy(&d, r, sizeof d);
-      if (!host_is_little_endian()) {
-        std::uint64_t y = 0;
-        for (int i = 0; i < 8; ++i) y = (y << 8) | ((d >> (8 * i)) & 0xff);
-        d = y;
-      }
-      return len < 8 ? d & ((std::uint64_t(1) << (8 * len)) - 1) : d;
-    }
     static bool host_is_little_endian() {
       const std::uint16_t probe = 1;
       unsigned char first;
@@ -296,6 +299,25 @@ public:
   // tetrahedron `t` (random access: at most `block_size - 1` records skipped)
   Tetrahedron operator[](std::size_t t) const { return *Cursor(*this, t); }
 
+  // Decodes the tetrahedra `[first, last)` into `out[0, last - first)`: the records of one smallest
+  // vertex after the other, each from its control byte alone (a cursor checks for the next vertex
+  // at every record).  Returns the end of what was written.
+  Tetrahedron* decode_range(std::size_t first, std::size_t last, Tetrahedron* out) const {
+    if (first >= last) return out;
+    const Cursor c(*this, first);
+    const unsigned char* r = bytes_.data() + c.offset_;
+    Index v = c.vertex_;
+    std::size_t left = c.left_, n = last - first;
+    for (;;) {
+      const std::size_t k = (std::min)(n, left);
+      for (std::size_t i = 0; i < k; ++i) r += decode_record(r, v, *out++);
+      n -= k;
+      if (n == 0) return out;
+      do left = count(++v);
+      while (left == 0);
+    }
+  }
+
   // decodes the tetrahedra `[first, last)` into `out`
   template <class OutputIterator>
   OutputIterator decode(std::size_t first, std::size_t last, OutputIterator out) const {
@@ -322,13 +344,69 @@ private:
     return control;
   }
 
+  // records the byte length of the run of `step_size` records ending before tetrahedron `t`,
+  // whose record starts at byte `offset`
+  void note_step(std::size_t t, std::uint64_t offset) {
+    const std::size_t i = t % block_size;
+    if (i == 0 || i % step_size != 0) return;
+    const std::size_t block = t / block_size, run = i / step_size - 1;
+    const std::uint64_t start =
+        run == 0 ? blocks_[block].offset : blocks_[block].offset + sum_steps(block, run);
+    steps_[steps_per_block * block + run] = static_cast<Step>(offset - start);
+  }
+  std::uint64_t sum_steps(std::size_t block, std::size_t runs) const {
+    std::uint64_t s = 0;
+    for (std::size_t i = 0; i < runs; ++i) s += steps_[steps_per_block * block + i];
+    return s;
+  }
+
   void make_record_lengths() {
     for (unsigned control = 0; control < 256; ++control) {
       unsigned n = 1;
-      for (unsigned k = 0; k < 3; ++k) n += length_of((control >> (2 + 2 * k)) & 3u);
+      Layout& l = layout_[control];
+      for (unsigned k = 0; k < 3; ++k) {
+        const unsigned code = (control >> (2 + 2 * k)) & 3u;
+        l.at[k] = static_cast<unsigned char>(n);
+        l.mask[k] = length_of(code) >= sizeof(Unit) ? ~Unit(0) : (Unit(1) << (8 * length_of(code))) - 1;
+        n += length_of(code);
+      }
       record_length_[control] = static_cast<unsigned char>(n);
     }
   }
+
+  // The record at `r` as the tetrahedron `c` of smallest vertex `v`; returns its length.  A
+  // difference is one load of `Unit` (the 8 bytes of padding make it safe) and a mask.
+  unsigned decode_record(const unsigned char* r, Index v, Tetrahedron& c) const {
+    const unsigned control = r[0];
+    const Layout& l = layout_[control];
+    const unsigned p = control & 3u;
+    c[p] = v;
+    c[(p + 1) & 3] = static_cast<Index>(v + 1 + (load_unit(r + l.at[0]) & l.mask[0]));
+    c[(p + 2) & 3] = static_cast<Index>(v + 1 + (load_unit(r + l.at[1]) & l.mask[1]));
+    c[(p + 3) & 3] = static_cast<Index>(v + 1 + (load_unit(r + l.at[2]) & l.mask[2]));
+    if constexpr (sizeof(Index) <= 4) { // 1 + (c0 + 1) + (c1 + 1) + (c2 + 1): no lookup in the chain
+      const unsigned x = control >> 2;
+      return 4 + (x & 3u) + ((x >> 2) & 3u) + (x >> 4);
+    } else
+      return record_length_[control];
+  }
+  // a little-endian difference: 4 bytes for 32-bit indices (at most 4 bytes long), else 8
+  using Unit = std::conditional_t<(sizeof(Index) <= 4), std::uint32_t, std::uint64_t>;
+  static Unit load_unit(const unsigned char* r) {
+    Unit d;
+    std::memcpy(&d, r, sizeof d);
+    if (!Cursor::host_is_little_endian()) {
+      Unit y = 0;
+      for (unsigned i = 0; i < sizeof d; ++i) y = static_cast<Unit>((y << 8) | ((d >> (8 * i)) & 0xff));
+      d = y;
+    }
+    return d;
+  }
+  struct Layout { // where the differences of a record are, and their masks, by its control byte
+    unsigned char at[3];
+    Unit mask[3];
+  };
+  Layout layout_[256];
 
   struct Stream { // where `append()` is
     std::size_t t = 0, rank = 0;
@@ -341,6 +419,9 @@ private:
   std::vector<unsigned char> counts_;
   std::vector<std::pair<Index, Index>> big_counts_;
   std::vector<Block> blocks_;
+  // the byte length of a run of `step_size` records: at most 16 x 13 bytes with 32-bit indices
+  using Step = std::conditional_t<(sizeof(Index) <= 4), std::uint8_t, std::uint16_t>;
+  std::vector<Step> steps_;
   unsigned char record_length_[256];
 };
 
@@ -443,17 +524,21 @@ public:
   template <class Shared>
   void decode(const Compact_tetrahedra<Index>& T, const Shared& shared, std::pair<Index, Index> owned) {
     ids_.clear();
-    cells_.clear();
-    typename Compact_tetrahedra<Index>::Cursor c(T, owned.first);
-    for (Index t : shared) {
-      c.seek(t);
-      ids_.push_back(t);
-      cells_.push_back(*c);
+    n_shared_ = static_cast<std::size_t>(std::distance(shared.begin(), shared.end()));
+    const std::size_t n = n_shared_ + static_cast<std::size_t>(owned.second - owned.first);
+    if (cells_.size() < n) cells_.resize(n); // the buffer is only written; it grows, never shrinks
+    ids_.reserve(n_shared_);
+    Tetrahedron* out = cells_.data();
+    if (n_shared_ > 0) {
+      typename Compact_tetrahedra<Index>::Cursor c(T, *shared.begin());
+      for (Index t : shared) {
+        c.seek(t);
+        ids_.push_back(t);
+        *out++ = *c;
+      }
     }
-    n_shared_ = ids_.size();
     owned_ = owned;
-    c.seek(owned.first);
-    for (Index t = owned.first; t < owned.second; ++t, ++c) cells_.push_back(*c);
+    T.decode_range(owned.first, owned.second, out);
   }
   // tetrahedron `t` of T; \pre `t` is in the list
   const Tetrahedron& operator[](Index t) const {
@@ -472,8 +557,6 @@ public:
     mutable std::size_t next_ = 0;
   };
 
-  // the tetrahedra in the order of the list
-  const std::vector<Tetrahedron>& in_list_order() const { return cells_; }
   std::size_t memory_bytes() const {
     return ids_.capacity() * sizeof(Index) + cells_.capacity() * sizeof(Tetrahedron);
   }
