@@ -111,11 +111,7 @@ public:
       std::uint64_t d[3];
       const unsigned control = encode(T[t], d);
       note_step(t, static_cast<std::uint64_t>(out - bytes_.data()));
-      *out++ = static_cast<unsigned char>(control);
-      for (int k = 0; k < 3; ++k) {
-        const unsigned len = length_of((control >> (2 + 2 * k)) & 3u);
-        for (unsigned b = 0; b < len; ++b) *out++ = static_cast<unsigned char>(d[k] >> (8 * b));
-      }
+      out = write_record(out, control, d);
     }
     CGAL_assertion(static_cast<std::size_t>(out - bytes_.data()) == total);
     blocks_.shrink_to_fit();
@@ -171,12 +167,7 @@ public:
       if (st.offset + len > bytes_.size() - 8)
         throw std::invalid_argument("Compact_tetrahedra::append: more bytes than announced");
       note_step(st.t, st.offset);
-      unsigned char* out = bytes_.data() + st.offset;
-      *out++ = static_cast<unsigned char>(control);
-      for (int k = 0; k < 3; ++k) {
-        const unsigned l = length_of((control >> (2 + 2 * k)) & 3u);
-        for (unsigned b = 0; b < l; ++b) *out++ = static_cast<unsigned char>(d[k] >> (8 * b));
-      }
+      write_record(bytes_.data() + st.offset, control, d);
       st.offset += len;
       ++st.rank;
       ++st.t;
@@ -337,11 +328,30 @@ private:
     unsigned control = static_cast<unsigned>(p);
     for (int k = 0; k < 3; ++k) {
       d[k] = static_cast<std::uint64_t>(c[(p + 1 + k) & 3] - c[p] - 1);
-      unsigned code = 0;
-      while (code < 3 && (d[k] >> (8 * length_of(code))) != 0) ++code;
+      // the shortest length code that holds d[k] (lengths 1-4 bytes, or 1, 2, 4, 8), without branches
+      const std::uint64_t x = d[k];
+      const unsigned code = sizeof(Index) <= 4
+                                ? unsigned(x > 0xffu) + unsigned(x > 0xffffu) + unsigned(x > 0xffffffu)
+                                : unsigned(x > 0xffu) + unsigned(x > 0xffffu) + unsigned(x > 0xffffffffu);
       control |= code << (2 + 2 * k);
     }
     return control;
+  }
+
+  // Writes the record of control byte `control` and differences `d` at `out`; returns its end.
+  // Each difference is stored as a whole `std::uint64_t` (little-endian), the next one written over
+  // its unused bytes: the 8 bytes of padding after the last record keep this in bounds.
+  static unsigned char* write_record(unsigned char* out, unsigned control, const std::uint64_t (&d)[3]) {
+    *out++ = static_cast<unsigned char>(control);
+    for (int k = 0; k < 3; ++k) {
+      const unsigned len = length_of((control >> (2 + 2 * k)) & 3u);
+      if (Cursor::host_is_little_endian())
+        std::memcpy(out, &d[k], sizeof d[k]);
+      else
+        for (unsigned b = 0; b < len; ++b) out[b] = static_cast<unsigned char>(d[k] >> (8 * b));
+      out += len;
+    }
+    return out;
   }
 
   // records the byte length of the run of `step_size` records ending before tetrahedron `t`,
