@@ -287,7 +287,7 @@ public:
     std::size_t left_ = 0; // the tetrahedra of `vertex_` from the position on
   };
 
-  // tetrahedron `t` (random access: at most `block_size - 1` records skipped)
+  // tetrahedron `t` (random access: at most `step_size - 1` records skipped)
   Tetrahedron operator[](std::size_t t) const { return *Cursor(*this, t); }
 
   // Decodes the tetrahedra `[first, last)` into `out[0, last - first)`: the records of one smallest
