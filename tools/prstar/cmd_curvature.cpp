@@ -18,6 +18,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <optional>
 
 namespace prstar {
 
@@ -134,6 +135,19 @@ struct Curvature_arrays {
   Map map() { return Map{this}; }
 };
 
+// Without a file to write, only the summary is kept: each vertex's curvature is added to it as it
+// comes (the sums are exact, so the order does not matter), with no array per vertex.
+struct Summary_map { // a WritablePropertyMap; never written by two threads at once
+  using key_type = std::size_t;
+  using value_type = CGAL::PR_star_octree::Vertex_curvature;
+  using reference = value_type;
+  using category = boost::writable_property_map_tag;
+  Curvature_summary* s;
+  friend void put(const Summary_map& m, std::size_t, const value_type& c) {
+    m.s->add(vertex_type_code(c.type), c.distortion, c.domain_curvature);
+  }
+};
+
 int run_curvature(const Options& o) {
   const std::string& input = o.input();
   const std::size_t kv = o.kv();
@@ -181,23 +195,31 @@ int run_curvature(const Options& o) {
   o.set_used_kv(tree);
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("computing the distortion");
-  Curvature_arrays curv(nv); // the user's numbering
-  if (field)
-    CGAL::PR_star_octree::compute_curvature(tree, CGAL::make_property_map(field->values), curv.map(),
-                                            params::progress(progress.callback()));
-  else if (axis < 0)
-    CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::scalar_field_map(tree), curv.map(),
-                                            params::progress(progress.callback()));
+  Curvature_summary summary;
+  std::optional<Curvature_arrays> curv; // the user's numbering, for the files
+  if (!lean) curv.emplace(nv);
+  const auto compute = [&](auto map) {
+    if (field)
+      CGAL::PR_star_octree::compute_curvature(tree, CGAL::make_property_map(field->values), map,
+                                              params::progress(progress.callback()));
+    else if (axis < 0)
+      CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::scalar_field_map(tree), map,
+                                              params::progress(progress.callback()));
+    else
+      CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::coordinate_field_map(tree, axis),
+                                              map, params::progress(progress.callback()));
+  };
+  if (lean)
+    compute(Summary_map{&summary});
   else
-    CGAL::PR_star_octree::compute_curvature(tree, CGAL::PR_star_octree::coordinate_field_map(tree, axis),
-                                            curv.map(), params::progress(progress.callback()));
+    compute(curv->map());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
 
   // The summary: the values are added exactly (the same mean in any order, as a distributed run
   // finds it).
-  Curvature_summary summary;
-  for (std::size_t v = 0; v < nv; ++v) summary.add(curv.code[v], curv.distortion[v], curv.domain[v]);
+  if (!lean)
+    for (std::size_t v = 0; v < nv; ++v) summary.add(curv->code[v], curv->distortion[v], curv->domain[v]);
   if (!lean) {
     // the mesh of the octree in the user's vertex order (its points for the CSV), with its arrays
     if (out.empty()) arrays.cell_data.clear(); // the CSV alone: no cell data (nor their permutation)
@@ -206,7 +228,7 @@ int run_curvature(const Options& o) {
       progress.phase("writing " + csv);
       write_curvature_csv(csv, nv, [&](std::size_t v) {
         const auto p = view.points[v];
-        return Curvature_row{p.x(), p.y(), p.z(), curv.code[v], curv.distortion[v], curv.domain[v]};
+        return Curvature_row{p.x(), p.y(), p.z(), curv->code[v], curv->distortion[v], curv->domain[v]};
       });
       progress.finish();
     }
@@ -215,9 +237,9 @@ int run_curvature(const Options& o) {
       // VTU point data must be finite (our reader refuses NaN, and so do some of ParaView's): the
       // undefined values of non-manifold vertices are written as 0 there, flagged by boundary = 2.
       std::vector<CGAL::PR_star_octree::Point_data_array> result(3);
-      result[0] = {"boundary", std::vector<double>(curv.code.begin(), curv.code.end())};
-      result[1] = {"distortion", std::move(curv.distortion)};
-      result[2] = {"domain_curvature", std::move(curv.domain)};
+      result[0] = {"boundary", std::vector<double>(curv->code.begin(), curv->code.end())};
+      result[1] = {"distortion", std::move(curv->distortion)};
+      result[2] = {"domain_curvature", std::move(curv->domain)};
       for (auto& a : result)
         for (double& x : a.values)
           if (!std::isfinite(x)) x = 0;

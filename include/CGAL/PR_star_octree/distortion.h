@@ -203,7 +203,9 @@ constexpr unsigned compute_curvature_relations = VERTEX_LINKS | LOCAL_TETRAHEDRA
 ///         index) and value `Vertex_curvature`
 /// \param tree the octree of the mesh
 /// \param field the scalar field
-/// \param curvature_map receives the curvature of each vertex
+/// \param curvature_map receives the curvature of each vertex, once per vertex, leaf after leaf
+///        in the octree's order; never from two threads at once (in parallel, not necessarily from
+///        the calling thread), so a map writing into a plain array needs no locking
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
@@ -218,6 +220,10 @@ constexpr unsigned compute_curvature_relations = VERTEX_LINKS | LOCAL_TETRAHEDRA
 ///         map is read once per vertex, from the calling thread, before the leaves; a field map of
 ///         the octree, `scalar_field_map()` or `coordinate_field_map()`, is read in place, from
 ///         several threads in parallel)
+///
+/// Memory: besides the octree, a copy of the field in the octree's numbering (8 bytes per vertex,
+/// none for a field map of the octree) and the results of the leaves in flight; no buffer per
+/// vertex.
 template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GT, class I, class FieldMap,
           class CurvatureMap, class NP = parameters::Default_named_parameters>
 Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const FieldMap& field,
@@ -230,11 +236,14 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
     std::vector<std::array<double, 3>> points;
   };
   Vertex_type_counts counts;
-  // In parallel, the leaves write their own slots of `result` (octree numbering), copied to the
-  // user's map afterwards, in vertex order: the map is written from the calling thread only.
-  // Sequentially, each leaf writes to the map directly (no per-vertex buffer).
-  constexpr bool parallel = Leaf_executor<ConcurrencyTag>::is_parallel();
-  std::vector<Vertex_curvature> result(parallel ? tree.number_of_vertices() : 0);
+  // Each leaf returns the curvature of its own vertices; the executor's reduction, called one leaf
+  // at a time in leaf order, writes them to the user's map.  So the map is never written by two
+  // threads at once, and only the results of the leaves in flight are held (no per-vertex buffer:
+  // that was 40 bytes per vertex, more than a third of the structure's own size on a lattice).
+  struct Leaf_result {
+    I first = 0; // the leaf's first vertex
+    std::vector<Vertex_curvature> curvature;
+  };
   // A field in the user's numbering is copied into the octree's numbering first, one read per
   // vertex (the leaves would read it at scattered places, several times per vertex).
   constexpr bool in_place = std::is_same<FieldMap, Octree_field_map<Octree>>::value;
@@ -249,7 +258,7 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
   };
   // The links (checked, as `Vertex_classifier` does by default) and the leaf's tetrahedra in local
   // ids: the coordinates and the field value of each vertex are read once per leaf.
-  Leaf_executor<ConcurrencyTag>().for_each(
+  Leaf_executor<ConcurrencyTag>().map_reduce(
       tree, compute_curvature_relations, State(),
       [&](State& state, const Leaf_topology<Octree>& local) {
         const I vb = local.vertex_begin();
@@ -283,23 +292,22 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
             s4[l[k]].add(a.second);
           }
         }
-        for (std::size_t i = 0; i < nv; ++i) {
-          const I v = static_cast<I>(vb + i);
-          const Vertex_curvature c =
-              internal::finish_curvature(s3[i].value(), s4[i].value(), local.vertex_type(v));
-          if constexpr (parallel)
-            result[v] = c;
-          else {
-            counts.add(c.type);
-            put(curvature_map, static_cast<std::size_t>(tree.original_vertex(v)), c);
-          }
+        Leaf_result r;
+        r.first = vb;
+        r.curvature.resize(nv);
+        for (std::size_t i = 0; i < nv; ++i)
+          r.curvature[i] = internal::finish_curvature(s3[i].value(), s4[i].value(),
+                                                      local.vertex_type(static_cast<I>(vb + i)));
+        return r;
+      },
+      [&](Leaf_result&& r) {
+        for (std::size_t i = 0; i < r.curvature.size(); ++i) {
+          counts.add(r.curvature[i].type);
+          put(curvature_map, static_cast<std::size_t>(tree.original_vertex(static_cast<I>(r.first + i))),
+              r.curvature[i]);
         }
       },
       internal::Progress_reporter<NP>(np));
-  for (std::size_t v = 0; v < result.size(); ++v) {
-    counts.add(result[v].type);
-    put(curvature_map, static_cast<std::size_t>(tree.original_vertex(static_cast<I>(v))), result[v]);
-  }
   return counts;
 }
 
