@@ -162,15 +162,7 @@ int run_boundary(const Options& o) {
   // from the file several times).  By default, a header the ranges cannot read leaves the file to
   // the whole-file reader (and its messages).
   std::optional<PIO::Vtu_tetrahedron_source> streaming;
-  if (o.compact_choice() != Options::Compact::no && !writes &&
-      PIO::internal::lower_extension(input) == "vtu") {
-    try {
-      streaming.emplace(input);
-    } catch (const std::exception&) {
-      if (o.compact_choice() == Options::Compact::yes) throw;
-    }
-    if (streaming && (!streaming->supported() || !o.stream(streaming->number_of_cells()))) streaming.reset();
-  }
+  if (!writes) streaming = streaming_source(o, input);
   if (streaming) progress.phase("reading the vertices of " + input);
   Mesh mesh = streaming ? streaming->read_vertices() : read_mesh(input, progress);
   // The octree takes the mesh over (no second copy of V and T).  Without an output to write it keeps

@@ -39,7 +39,7 @@ void table_cells(std::vector<std::string>& row, const Value_summary& s) {
 
 // The summary of the curvature command (one process or distributed): JSON or a table.
 void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const std::string& field_name,
-                      const Curvature_summary& summary, double seconds) {
+                      const Curvature_summary& summary, double seconds, bool compact, bool streamed) {
   const std::string& input = o.input();
   const std::string out = o.output(), csv = o.output("--csv");
   Value_summary distortion = summary.distortion[0], domain = summary.domain[0];
@@ -63,7 +63,7 @@ void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const st
       json_summary(j, "domain_curvature", summary.domain[k]);
       j.end_object();
     }
-    j.field("seconds", seconds);
+    j.field("compact_tetrahedra", compact).field("streamed", streamed).field("seconds", seconds);
     if (!out.empty()) j.field("output", out);
     if (!csv.empty()) j.field("csv", csv);
     j.end_object();
@@ -71,8 +71,11 @@ void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const st
     return;
   }
   std::cout << input << ": distortion of '" << field_name
-            << "' and curvature of the domain (k_v = " << o.kv_label() << ", " << fixed(seconds, 3)
-            << " s)\n";
+            << "' and curvature of the domain (k_v = " << o.kv_label()
+            << (streamed  ? ", compact tetrahedra, read in passes"
+                : compact ? ", compact tetrahedra"
+                          : "")
+            << ", " << fixed(seconds, 3) << " s)\n";
   Table t({"vertices", "count", "distortion min", "max", "mean", "domain curvature min", "max", "mean"});
   auto row = [&](const std::string& name, std::uint64_t count, const Value_summary& d,
                  const Value_summary& c) {
@@ -153,7 +156,14 @@ int run_curvature(const Options& o) {
   const std::size_t kv = o.kv();
   const std::string out = o.output(), csv = o.output("--csv");
   Progress_bar progress(o.show_progress());
-  Mesh mesh = read_mesh(input, progress);
+  const bool lean = out.empty() && csv.empty();
+  // Without a file to write, a .vtu may be read in passes (`streaming_source()`: --compact, or by
+  // default from 2^25 cells), as boundary does: the vertices and the field first, then the
+  // tetrahedra straight into the compact array.
+  std::optional<CGAL::PR_star_octree::IO::Vtu_tetrahedron_source> streaming;
+  if (lean) streaming = streaming_source(o, input);
+  if (streaming) progress.phase("reading the vertices of " + input);
+  Mesh mesh = streaming ? streaming->read_vertices() : read_mesh(input, progress);
 
   // The octree takes the mesh over (no second copy of V and T).  The field: a coordinate, or a
   // point-data array.  Without a file to write (lean), that array alone goes into the octree as
@@ -162,7 +172,6 @@ int run_curvature(const Options& o) {
   // files are in the user's vertex order) and, only when the mesh has cell data, the tetrahedron
   // permutation (those arrays follow the octree's order of the tetrahedra, the one written).
   std::string field_name = o.get("--field");
-  const bool lean = out.empty() && csv.empty();
   const int axis = (field_name == "x" || field_name == "y" || field_name == "z") ? field_name[0] - 'x' : -1;
   Mesh_arrays arrays;
   if (!lean) arrays = Mesh_arrays(mesh);
@@ -190,8 +199,10 @@ int run_curvature(const Options& o) {
                       .maximum_depth(o.max_depth())
                       .compact_tetrahedra(o.compact())
                       .coordinate_precision(o.coordinate_precision());
-  const Octree tree(std::move(mesh), np.vertex_permutation(!lean).tetrahedron_permutation(
-                                         !out.empty() && !arrays.cell_data.empty()));
+  const Octree tree = streaming
+                          ? Octree(std::move(mesh), *streaming, np.vertex_permutation(false))
+                          : Octree(std::move(mesh), np.vertex_permutation(!lean).tetrahedron_permutation(
+                                                        !out.empty() && !arrays.cell_data.empty()));
   o.set_used_kv(tree);
   const std::size_t nv = tree.number_of_vertices(), nt = tree.number_of_tetrahedra();
   progress.phase("computing the distortion");
@@ -247,7 +258,7 @@ int run_curvature(const Options& o) {
       progress.finish();
     }
   }
-  report_curvature(o, nv, nt, field_name, summary, seconds);
+  report_curvature(o, nv, nt, field_name, summary, seconds, tree.is_compact(), streaming.has_value());
   return exit_success;
 }
 
@@ -261,7 +272,10 @@ Command curvature_command() {
 into R^4; the distortion at v is (4 pi, or the sum of the 3D solid angles on the boundary) minus
 the sum of the solid angles at v of the lifted tetrahedra of its star.  Also computes the 3D
 concentrated curvature of the domain ((4 pi or 2 pi) minus the sum of the 3D solid angles).
-Non-manifold vertices get NaN.)")
+Non-manifold vertices get NaN.  With neither OUT nor OUT.csv, a .vtu whose arrays are appended raw
+(as prstar generate writes them) and that has 2^25 cells or more (any size with --compact; never
+with --no-compact) is read in passes, as boundary reads it: the plain tetrahedron array is never
+held whole.)")
       .option("--field", "NAME|x|y|z",
               "a point-data array of MESH (default: its first one), or x, y, z for a coordinate")
       .kv()
@@ -279,8 +293,8 @@ Non-manifold vertices get NaN.)")
           "keys: vertices, tetrahedra, kv, kv_automatic, field, interior_vertices, boundary_vertices,\n"
           "nonmanifold_vertices, unreferenced_vertices, distortion_min/max/mean and\n"
           "domain_curvature_min/max/mean (over manifold vertices, when there are some),\n"
-          "interior and boundary (objects: vertices and the same six keys), seconds,\n"
-          "output, csv")
+          "interior and boundary (objects: vertices and the same six keys), compact_tetrahedra,\n"
+          "streamed (read in passes), seconds, output, csv")
       .run(run_curvature);
 }
 

@@ -45,7 +45,7 @@ const std::string help_compact =
     "store the octree's tetrahedra compactly: about 5 bytes each instead of 16, the same results;\n"
     "each leaf decodes its tetrahedra once (see `prstar stats` for the bytes per tetrahedron).\n"
     "Default: compact where the command builds by streaming from a .vtu of 2^25 cells or more\n"
-    "(boundary with no output), plain elsewhere";
+    "(boundary and curvature with no output), plain elsewhere";
 const char* const help_no_compact = "store the plain tetrahedron array (four indices each), never streaming";
 const char* const help_coordinates =
     "how the octree stores the coordinates: as the file has them (default: 32-bit floats\n"
@@ -621,6 +621,21 @@ Mesh read_mesh(const std::string& file, Progress_bar& progress) {
               << " tetrahedra kept; skipped the other cells: " << what << '\n';
   }
   return mesh;
+}
+
+std::optional<CGAL::PR_star_octree::IO::Vtu_tetrahedron_source> streaming_source(const Options& o,
+                                                                                 const std::string& input) {
+  std::optional<CGAL::PR_star_octree::IO::Vtu_tetrahedron_source> source;
+  if (o.compact_choice() == Options::Compact::no ||
+      CGAL::PR_star_octree::IO::internal::lower_extension(input) != "vtu")
+    return source;
+  try {
+    source.emplace(input);
+  } catch (const std::exception&) {
+    if (o.compact_choice() == Options::Compact::yes) throw;
+  }
+  if (source && (!source->supported() || !o.stream(source->number_of_cells()))) source.reset();
+  return source;
 }
 
 void write_through_temporary(const std::string& out, const std::function<void(const std::string&)>& write) {

@@ -13,6 +13,7 @@
 #include "cli.h"
 #include "progress.h"
 
+#include <CGAL/PR_star_octree/IO/vtu_source.h>
 #include <CGAL/PR_star_octree/Indexed_tetrahedral_mesh.h>
 #include <CGAL/PR_star_octree/parameters.h>
 
@@ -20,6 +21,7 @@
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -232,6 +234,14 @@ Json& json_kv(Json& j, const Options& o);
 
 /// Reads the mesh file `file` (any format the library reads), with a progress line.
 Mesh read_mesh(const std::string& file, Progress_bar& progress);
+
+/// For a command that writes no mesh: the source its streaming construction reads the tetrahedra
+/// of `input` from (several passes, never holding the plain tetrahedron array), when it should
+/// build so (`Options::stream()`: --compact, or by default 2^25 cells or more) and `input` is a
+/// .vtu readable by ranges; empty otherwise, and the whole file is read by `read_mesh()` (with its
+/// messages).  With --compact, a .vtu whose header cannot be read is an error here.
+std::optional<CGAL::PR_star_octree::IO::Vtu_tetrahedron_source> streaming_source(const Options& o,
+                                                                                 const std::string& input);
 
 /// Writes `out` through a temporary file in the same folder, renamed to `out` at the end: an error
 /// (or an interruption by SIGINT, SIGTERM, SIGHUP) never leaves a half-written `out` or the

@@ -105,7 +105,8 @@ void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
                      const CGAL::PR_star_octree::Boundary_counts& b, double seconds,
                      long long interfaces = -1, bool compact = false, bool streamed = false);
 void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const std::string& field_name,
-                      const Curvature_summary& summary, double seconds);
+                      const Curvature_summary& summary, double seconds, bool compact = false,
+                      bool streamed = false);
 /// `problems`: the list of `check_validity()`'s `problems_output` (one process), or null (distributed:
 /// the counts only).  \returns the exit status: valid or not
 int report_validity(const Options& o, const CGAL::PR_star_octree::Validity_result& r, double seconds,
