@@ -223,6 +223,24 @@ foreach(field scalar x)
   endif()
 endforeach()
 run(0 "\"interior_vertices\": 125," "" boundary ${WORK}/lattice.vtu --max-memory unlimited --json)
+# stats streams as boundary does (issue 24): with --compact, the same statistics (storage included)
+# as the compact array built in place from the same mesh as a .vtk, for two k_v; only `streamed`
+# differs, and the table says so.
+run(0 "" "" convert ${WORK}/lattice.vtu ${WORK}/lattice_copy.vtk --force --quiet)
+run(0 "\"streamed\": false," "" stats ${WORK}/lattice_copy.vtk --compact --kv 4,auto --json)
+string(REPLACE "\"streamed\": false," "" stats_in_place "${last_out}")
+run(0 "\"streamed\": true," "" stats ${WORK}/lattice.vtu --compact --kv 4,auto --json)
+string(REPLACE "\"streamed\": true," "" stats_streamed "${last_out}")
+if(NOT stats_in_place MATCHES "\"bytes_detail\"")
+  message(SEND_ERROR "stats --compact: no bytes_detail in ${stats_in_place}")
+endif()
+string(REGEX REPLACE "[, ]+$" "" stats_in_place "${stats_in_place}")
+string(REGEX REPLACE "[, ]+$" "" stats_streamed "${stats_streamed}")
+if(NOT stats_streamed STREQUAL stats_in_place)
+  message(SEND_ERROR "stats streamed:\n${stats_streamed}\nin place:\n${stats_in_place}")
+endif()
+run(0 "tetrahedra compact \\(read in passes\\)" "" stats ${WORK}/lattice.vtu --compact)
+run(0 "\"streamed\": false," "" stats ${WORK}/lattice.vtu --json)
 run(2 "" "--max-memory: '12X' is not a size" stats ${WORK}/lattice.vtu --max-memory 12X)
 run(2 "" "--threads must be a positive integer" stats ${WORK}/lattice.vtu --threads 0)
 # --threads: the same results with one thread and with two (outputs compared byte for byte)
@@ -434,6 +452,65 @@ if(NOT last_out MATCHES "\"output\": ")
   message(SEND_ERROR "validate -o --json: no output key: ${last_out}")
 endif()
 run(2 "" "must be a .vtu" validate ${WORK}/problems.off -o ${WORK}/problems_out.mesh)
+# validate streamed (issue 24): a .vtu appended raw with --compact is read in passes, the octree
+# keeps no tetrahedron permutation, and the tetrahedra with problems are found again in the file:
+# the planted defects keep their numbers (the same checks as above), and with a tetrahedron listed
+# twice (1 2 3 4 as tetrahedra 1 and 6: the triangle 1 2 3 in 0, 1 and 6), the JSON in place and
+# streamed are the same, with 1 and 2 threads.  The .vtu files are written here, byte by byte
+# (prstar convert writes base64).
+file(WRITE ${WORK}/raw_vtu.py [=[
+import struct, sys
+# OFF (4 indices per element: tetrahedra) -> .vtu with every array appended raw (UInt64 headers)
+lines = [l.split() for l in open(sys.argv[1]) if l.strip()]
+nv, nt = int(lines[1][0]), int(lines[1][1])
+pts = [float(x) for l in lines[2:2 + nv] for x in l]
+tets = [int(x) for l in lines[2 + nv:2 + nv + nt] for x in l]
+arrays = [("Float64", "Points", 3, struct.pack(f"<{len(pts)}d", *pts)),
+          ("Int64", "connectivity", 1, struct.pack(f"<{len(tets)}q", *tets)),
+          ("Int64", "offsets", 1, struct.pack(f"<{nt}q", *range(4, 4 * nt + 1, 4))),
+          ("UInt8", "types", 1, bytes([10] * nt))]
+xml, blob, offset = [], b"", 0
+for t, name, nc, data in arrays:
+    xml.append(f'<DataArray type="{t}" Name="{name}" NumberOfComponents="{nc}" format="appended" offset="{offset}"/>')
+    blob += struct.pack("<Q", len(data)) + data
+    offset += 8 + len(data)
+head = ('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian" '
+        'header_type="UInt64">\n<UnstructuredGrid>\n'
+        f'<Piece NumberOfPoints="{nv}" NumberOfCells="{nt}">\n<Points>\n{xml[0]}\n</Points>\n'
+        f'<Cells>\n{xml[1]}\n{xml[2]}\n{xml[3]}\n</Cells>\n</Piece>\n</UnstructuredGrid>\n'
+        '<AppendedData encoding="raw">\n_')
+open(sys.argv[2], "wb").write(head.encode() + blob + b"\n</AppendedData>\n</VTKFile>\n")
+]=])
+foreach(name problems problems_twice)
+  if(name STREQUAL problems_twice)
+    file(READ ${WORK}/problems.off problems_off)
+    string(REPLACE "OFF\n17 6\n" "OFF\n17 7\n" problems_off "${problems_off}")
+    file(WRITE ${WORK}/problems_twice.off "${problems_off}1 2 3 4\n")
+  endif()
+  execute_process(COMMAND /usr/bin/python3 ${WORK}/raw_vtu.py ${WORK}/${name}.off ${WORK}/${name}_raw.vtu
+                  RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(SEND_ERROR "raw_vtu.py ${name}.off: ${rc} ${err}")
+  endif()
+endforeach()
+run(3 "INVALID \\(compact tetrahedra, read in passes, .*tetrahedron 2 \\(vertices 6 8 7 9\\): inverted.*triangle 0 1 2: in 3 tetrahedra \\(0, 4, 5\\)"
+    "^$" validate ${WORK}/problems_raw.vtu --compact)
+run(3 "\"unreferenced_vertices\": 2" "^$" validate ${WORK}/problems_raw.vtu --compact --json --kv 1)
+file(WRITE ${WORK}/problems_streamed.json "${last_out}")
+execute_process(COMMAND /usr/bin/python3 ${WORK}/check_problems.py ${WORK}/problems_streamed.json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "ok")
+  message(SEND_ERROR "validate --compact (streamed) problems: ${rc} ${out} ${err}")
+endif()
+run(3 "\"tetrahedra\": \\[0, 1, 6\\]" "^$" validate ${WORK}/problems_twice_raw.vtu --no-compact --json)
+string(REGEX REPLACE "\"seconds\": [0-9.e+-]+" "" twice_in_place "${last_out}")
+foreach(threads 1 2)
+  run(3 "" "^$" validate ${WORK}/problems_twice_raw.vtu --compact --json --threads ${threads})
+  string(REGEX REPLACE "\"seconds\": [0-9.e+-]+" "" twice_streamed "${last_out}")
+  if(NOT twice_streamed STREQUAL twice_in_place)
+    message(SEND_ERROR "validate streamed (${threads} threads) and in place differ:\n${twice_streamed}\n${twice_in_place}")
+  endif()
+endforeach()
 # more than 10 of a kind: the first 10 and how many more; unreferenced vertices alone leave the mesh valid
 file(WRITE ${WORK}/lonely.off "OFF\n17 1\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
 foreach(i RANGE 4 16)

@@ -10,14 +10,20 @@
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/IO.h>
+#include <CGAL/PR_star_octree/IO/vtu_source.h>
 #include <CGAL/PR_star_octree/parameters.h>
 #include <CGAL/PR_star_octree/validity.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cstdint>
 #include <iostream>
 #include <iterator>
+#include <optional>
+#include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -136,7 +142,7 @@ std::string problem_lines(const std::vector<Problem>& problems,
 
 // The summary of the validate command (one process or distributed), and its exit status.
 int report_validity(const Options& o, const CGAL::PR_star_octree::Validity_result& r, double seconds,
-                    const std::vector<Problem>* problems) {
+                    const std::vector<Problem>* problems, bool compact, bool streamed) {
   const std::string& input = o.input();
   const std::string out = o.output();
   if (o.json()) {
@@ -174,7 +180,11 @@ int report_validity(const Options& o, const CGAL::PR_star_octree::Validity_resul
     t.add({"Euler characteristic", std::to_string(r.euler_characteristic)});
     t.add({"boundary triangles", std::to_string(r.boundary_triangles)});
     t.add({"boundary components", std::to_string(r.boundary_components)});
-    std::cout << input << ": " << (r.valid ? "valid" : "INVALID") << " (" << fixed(seconds, 3) << " s)\n"
+    std::cout << input << ": " << (r.valid ? "valid" : "INVALID") << " ("
+              << (streamed  ? "compact tetrahedra, read in passes, "
+                  : compact ? "compact tetrahedra, "
+                            : "")
+              << fixed(seconds, 3) << " s)\n"
               << t.str();
     if (problems != nullptr && !problems->empty())
       std::cout << "problems (user numbering from 0, at most " << table_problems_per_kind
@@ -191,6 +201,7 @@ namespace {
 
 using Octree = CGAL::PR_star_octree_3<>;
 namespace params = CGAL::PR_star_octree::parameters;
+namespace PIO = CGAL::PR_star_octree::IO;
 
 // The output extensions that keep point and cell data (from the library's format table).
 std::string cell_data_outputs() {
@@ -235,12 +246,85 @@ void add_problem_arrays(Mesh& mesh, const std::vector<Problem>& problems) {
   mesh.point_data.push_back({"problem", std::vector<double>(points.begin(), points.end())});
 }
 
+// The streaming construction keeps no tetrahedron permutation, so `check_validity()` names the
+// tetrahedra of `problems` by the octree's index.  One more pass over the file gives them the
+// input's: each is found by its four vertices as listed (the input's numbering, which the vertex
+// permutation gives back); tetrahedra listed alike are matched in order, as the octree keeps the
+// source's order among the tetrahedra of a smallest vertex.  Memory: the problems' tetrahedra and a
+// bit per vertex.  \throws std::runtime_error if a tetrahedron is not found (the file changed)
+void number_tetrahedra_as_listed(const Octree& tree, const PIO::Vtu_tetrahedron_source& source,
+                                 const std::string& file, std::vector<Problem>& problems) {
+  std::vector<std::size_t> ids; // the octree's indices named by the problems
+  for (const Problem& p : problems) {
+    if (p.tetrahedron != Problem::no_id) ids.push_back(p.tetrahedron);
+    ids.insert(ids.end(), p.tetrahedra.begin(), p.tetrahedra.end());
+  }
+  if (ids.empty()) return;
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  struct Entry {
+    std::array<std::uint64_t, 4> vertices; // as listed, the input's numbering
+    std::size_t octree, input;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(ids.size());
+  std::vector<bool> first_vertex(tree.number_of_vertices(), false); // a filter before the search
+  for (std::size_t t : ids) {
+    const auto c = tree.original_tetrahedron_vertices(static_cast<Octree::Index>(t));
+    entries.push_back(Entry{{{c[0], c[1], c[2], c[3]}}, t, Problem::no_id});
+    first_vertex[c[0]] = true;
+  }
+  const auto by_vertices = [](const Entry& a, const Entry& b) {
+    return std::tie(a.vertices, a.octree) < std::tie(b.vertices, b.octree);
+  };
+  std::sort(entries.begin(), entries.end(), by_vertices);
+  std::vector<std::size_t> matched(entries.size(), 0); // at the first entry of each list of vertices
+  std::size_t input = 0, found = 0;
+  source.for_each_chunk([&](const std::uint64_t* c, const int*, std::size_t n) {
+    for (std::size_t t = 0; t < n; ++t, ++input, c += 4) {
+      if (c[0] >= first_vertex.size() || !first_vertex[c[0]]) continue;
+      const Entry key{{{c[0], c[1], c[2], c[3]}}, 0, 0};
+      const auto first = std::lower_bound(entries.begin(), entries.end(), key, by_vertices);
+      if (first == entries.end() || first->vertices != key.vertices) continue;
+      const std::size_t i = static_cast<std::size_t>(first - entries.begin());
+      const std::size_t k = i + matched[i];
+      if (k < entries.size() && entries[k].vertices == key.vertices) {
+        entries[k].input = input;
+        ++matched[i];
+        ++found;
+      }
+    }
+  });
+  if (found != entries.size())
+    throw std::runtime_error(file + ": " + std::to_string(entries.size() - found) +
+                             " tetrahedra with problems were not found again in the file (did it change?)");
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& a, const Entry& b) { return a.octree < b.octree; });
+  const auto as_listed = [&](std::size_t t) {
+    return std::lower_bound(entries.begin(), entries.end(), t,
+                            [](const Entry& e, std::size_t x) { return e.octree < x; })
+        ->input;
+  };
+  for (Problem& p : problems) {
+    if (p.tetrahedron != Problem::no_id) p.tetrahedron = as_listed(p.tetrahedron);
+    for (std::size_t& t : p.tetrahedra) t = as_listed(t);
+    std::sort(p.tetrahedra.begin(), p.tetrahedra.end());
+  }
+  std::sort(problems.begin(), problems.end()); // kind, then element: as in place
+}
+
 int run_validate(const Options& o) {
   const std::string& input = o.input();
   const std::size_t kv = o.kv();
   const std::string out = o.output();
   Progress_bar progress(o.show_progress());
-  Mesh mesh = read_mesh(input, progress);
+  // Without -o, a .vtu readable by ranges with --compact or by default from 2^25 cells: the
+  // streaming construction (never the plain tetrahedron array whole), then one more pass over the
+  // file if problems name tetrahedra.
+  std::optional<PIO::Vtu_tetrahedron_source> streaming;
+  if (out.empty()) streaming = streaming_source(o, input);
+  if (streaming) progress.phase("reading the vertices of " + input);
+  Mesh mesh = streaming ? streaming->read_vertices() : read_mesh(input, progress);
   const auto start = std::chrono::steady_clock::now();
   progress.phase("building the PR-star octree (k_v = " + bucket_size_string(kv) + ")");
   // Without -o the octree takes the mesh over (no second copy of V and T); with it, the mesh is kept
@@ -248,14 +332,21 @@ int run_validate(const Options& o) {
   const auto np = params::bucket_size(kv)
                       .maximum_depth(o.max_depth())
                       .compact_tetrahedra(o.compact())
-                      .coordinate_precision(o.coordinate_precision());
-  const Octree tree = out.empty()
+                      .coordinate_precision(o.coordinate_precision())
+                      .vertex_permutation(true);
+  const Octree tree = streaming ? Octree(std::move(mesh), *streaming, np)
+                      : out.empty()
                           ? Octree(std::move(mesh), np)
                           : Octree(CGAL::PR_star_octree::make_input(mesh.points, mesh.tetrahedra), np);
+  o.set_used_kv(tree);
   progress.phase("checking the mesh");
   std::vector<Problem> problems;
   const auto r = CGAL::PR_star_octree::check_validity(
       tree, params::problems_output(std::back_inserter(problems)).progress(progress.callback()));
+  if (streaming) {
+    progress.phase("numbering the tetrahedra with problems as in " + input);
+    number_tetrahedra_as_listed(tree, *streaming, input, problems);
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
   if (!out.empty()) {
@@ -264,7 +355,7 @@ int run_validate(const Options& o) {
     write_mesh_file(out, mesh);
     progress.finish();
   }
-  return report_validity(o, r, seconds, &problems);
+  return report_validity(o, r, seconds, &problems, tree.is_compact(), streaming.has_value());
 }
 
 } // namespace
@@ -287,6 +378,11 @@ The table lists the first 10 problems of each kind, in the input's numbering (fr
   vertex 33: unreferenced (in no tetrahedron; a warning, the mesh stays valid)
 --json lists all of them, and -o writes the mesh with their places as flags.  Under mpirun
 only the counts are reported (no list, no -o): the lists are one-process only.
+
+Without OUT, a .vtu whose arrays are appended raw (as prstar generate writes them) and that has
+2^25 cells or more (any size with --compact; never with --no-compact) is read in passes, as
+boundary reads it: the plain tetrahedron array is never held whole, and the tetrahedra with
+problems are found again in the file for their numbers (one more pass when there are any).
 
 exit status: 0 the mesh is valid, 3 the mesh was checked and is not valid, 1 an error (missing,
 unreadable or malformed file), 2 a usage error.)help")

@@ -45,7 +45,7 @@ const std::string help_compact =
     "store the octree's tetrahedra compactly: about 5 bytes each instead of 16, the same results;\n"
     "each leaf decodes its tetrahedra once (see `prstar stats` for the bytes per tetrahedron).\n"
     "Default: compact where the command builds by streaming from a .vtu of 2^25 cells or more\n"
-    "(boundary and curvature with no output), plain elsewhere";
+    "(stats, and boundary, curvature and validate with no output), plain elsewhere";
 const char* const help_no_compact = "store the plain tetrahedron array (four indices each), never streaming";
 const char* const help_coordinates =
     "how the octree stores the coordinates: as the file has them (default: 32-bit floats\n"

@@ -41,7 +41,10 @@ void report_statistics(Mesh mesh, const std::string& name, const std::vector<std
                        std::size_t max_depth, bool compact,
                        CGAL::PR_star_octree::Coordinate_precision precision, bool json,
                        Progress_bar& progress,
-                       const std::string& octree_out = ""); // `--octree`: the leaf boxes of the last k_v
+                       const std::string& octree_out = "", // `--octree`: the leaf boxes of the last k_v
+                       // the tetrahedra read in passes from this file (the streaming construction),
+                       // `mesh` then empty
+                       const CGAL::PR_star_octree::IO::Vtu_tetrahedron_source* source = nullptr);
 
 /// Values over a set of vertices: smallest, largest, and their exact sum (the same mean whatever
 /// the order in which they are added, e.g. by several ranks).
@@ -108,9 +111,11 @@ void report_curvature(const Options& o, std::size_t nv, std::size_t nt, const st
                       const Curvature_summary& summary, double seconds, bool compact = false,
                       bool streamed = false);
 /// `problems`: the list of `check_validity()`'s `problems_output` (one process), or null (distributed:
-/// the counts only).  \returns the exit status: valid or not
+/// the counts only); `compact`, `streamed`: the table says how the tetrahedra were stored and read
+/// (the JSON keeps the keys of the Python module's `validate`).  \returns the exit status: valid or not
 int report_validity(const Options& o, const CGAL::PR_star_octree::Validity_result& r, double seconds,
-                    const std::vector<CGAL::PR_star_octree::Validity_problem>* problems = nullptr);
+                    const std::vector<CGAL::PR_star_octree::Validity_problem>* problems = nullptr,
+                    bool compact = false, bool streamed = false);
 
 #ifdef PRSTAR_WITH_MPI
 /// Gives stats, boundary, curvature and validate their distributed form (cmd_distributed.cpp).
