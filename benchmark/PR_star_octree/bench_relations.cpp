@@ -17,8 +17,11 @@
 // and tetrahedron permutations its queries answer through, which `prstar stats` does not build),
 // with its breakdown and the permutations kept beside it; the baselines' bytes are their own.
 //
-// usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--csv OUT.csv]
-// MESH...
+// With --compact, every k_v has a second PR-star row, "PR-star compact": the octree with the
+// compact tetrahedron array (named parameter `compact_tetrahedra`), the same queries.
+//
+// usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--compact]
+// [--csv OUT.csv] MESH...
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/IO.h>
@@ -105,12 +108,13 @@ std::size_t mesh_bytes(const Mesh& m) {
   return m.points.capacity() * sizeof(Mesh::Point_3) + m.tetrahedra.capacity() * sizeof(Mesh::Tetrahedron);
 }
 
-Result run_prstar(const Mesh& mesh, std::size_t kv, int reps) {
+Result run_prstar(const Mesh& mesh, std::size_t kv, int reps, bool compact) {
   Result r;
   std::unique_ptr<Octree> tree;
   r.build_seconds = best_of(reps, [&] {
-    tree = std::make_unique<Octree>(CGAL::PR_star_octree::make_input(mesh),
-                                    CGAL::PR_star_octree::parameters::bucket_size(kv));
+    tree = std::make_unique<Octree>(
+        CGAL::PR_star_octree::make_input(mesh),
+        CGAL::PR_star_octree::parameters::bucket_size(kv).compact_tetrahedra(compact));
   });
   const auto s = tree->statistics();
   r.nodes = s.nodes;
@@ -235,7 +239,7 @@ std::string fmt(const char* f, double v) {
 
 const char* const usage =
     "usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--threads N] [--no-cgal] "
-    "[--csv OUT.csv] MESH...\n";
+    "[--compact] [--csv OUT.csv] MESH...\n";
 
 } // namespace
 
@@ -243,7 +247,7 @@ int main(int argc, char** argv) {
   std::vector<std::size_t> kvs = {prstar_bench::automatic_kv,  10, 20, 50, 100, 200, 400, 800,
                                   Octree::infinite_bucket_size};
   int reps = 3;
-  bool with_cgal = true;
+  bool with_cgal = true, with_compact = false;
   int threads = 0; // 0: TBB's default (every core)
   std::string csv_file;
   std::vector<std::string> files;
@@ -255,6 +259,8 @@ int main(int argc, char** argv) {
       csv_file = argv[++i];
     else if (a == "--no-cgal")
       with_cgal = false;
+    else if (a == "--compact")
+      with_compact = true;
     else if (a == "--threads" && i + 1 < argc)
       threads = std::max(1, std::atoi(argv[++i]));
     else if (a == "--kv" && i + 1 < argc) {
@@ -338,9 +344,13 @@ int main(int argc, char** argv) {
     }
     for (std::size_t kv : kvs) {
       std::cerr << "  PR-star k_v = " << kv_name(kv) << " ...\n";
-      rows.push_back({"PR-star", "file", kv_name(kv),
-                      prstar_bench::in_child<Result>([&] { return run_prstar(file_mesh, kv, reps); })});
-      if (kv == prstar_bench::automatic_kv) rows.back().kv += " (" + std::to_string(rows.back().r.kv) + ")";
+      for (const bool compact : {false, true}) {
+        if (compact && !with_compact) continue;
+        rows.push_back(
+            {compact ? "PR-star compact" : "PR-star", "file", kv_name(kv),
+             prstar_bench::in_child<Result>([&] { return run_prstar(file_mesh, kv, reps, compact); })});
+        if (kv == prstar_bench::automatic_kv) rows.back().kv += " (" + std::to_string(rows.back().r.kv) + ")";
+      }
     }
     const Result& ia_file = rows[0].r;
     const Result& ia_same = rows[1].r;
@@ -355,7 +365,7 @@ int main(int argc, char** argv) {
       if (r.checksum != ia_file.checksum)
         std::cerr << "  warning: " << row.structure << " VT checksum " << r.checksum << " != IA "
                   << ia_file.checksum << '\n';
-      const bool pr = row.structure == "PR-star";
+      const bool pr = row.structure.rfind("PR-star", 0) == 0;
       const double vs_ia_file = r.vt_seconds / ia_file.vt_seconds;
       const double vs_ia_same = r.vt_seconds / ia_same.vt_seconds;
       const double vs_cgal = cgal_same && cgal_same->ok ? r.vt_seconds / cgal_same->vt_seconds : 0;
