@@ -215,8 +215,7 @@ public:
       return;
     }
     const Block& b = blocks_[block];
-    std::uint64_t offset = b.offset;
-    for (std::size_t i = 0; i < steps; ++i) offset += steps_[steps_per_block * block + i];
+    const std::uint64_t offset = b.offset + sum_steps(block, steps);
     __builtin_prefetch(bytes_.data() + offset);
     __builtin_prefetch(bytes_.data() + offset + 64);
     __builtin_prefetch(counts_.data() + b.vertex);
@@ -248,7 +247,7 @@ public:
       rank_ = b.rank;
       t_ = t - t % block_size;
       if (steps > 0) { // whole runs: their bytes from the steps, their vertices from the counts
-        for (std::size_t i = 0; i < steps; ++i) offset_ += a_->steps_[steps_per_block * block + i];
+        offset_ += a_->sum_steps(block, steps);
         t_ += steps * step_size;
         rank_ += steps * step_size;
         std::size_t n;
@@ -564,12 +563,11 @@ public:
     n_shared_ = static_cast<std::size_t>(std::distance(shared.begin(), shared.end()));
     const std::size_t n = n_shared_ + static_cast<std::size_t>(owned.second - owned.first);
     if (cells_.size() < n) cells_.resize(n); // the buffer is only written; it grows, never shrinks
-    ids_.reserve(n_shared_);
     Tetrahedron* out = cells_.data();
     if (n_shared_ > 0) {
       // The shared tetrahedra are scattered over T: what the seeks read is fetched 8 and 16
       // tetrahedra ahead, so that the cache misses of one overlap the decoding of others.
-      for (Index t : shared) ids_.push_back(t);
+      ids_.assign(shared.begin(), shared.end());
       typename Compact_tetrahedra<Index>::Cursor c(T, ids_[0]);
       for (std::size_t i = 0; i < n_shared_; ++i) {
         if (i + 16 < n_shared_) T.prefetch(ids_[i + 16], false);
