@@ -272,7 +272,8 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
           state.fields[j] = value(v);
         }
         // Each tetrahedron of the leaf once, for all its corners in the leaf, added exactly as in
-        // `vertex_curvature()` (the same bits).
+        // `vertex_curvature()` (the same bits: `Tetrahedron_solid_angles` computes a corner's
+        // angles alike whichever corners are asked).
         std::vector<internal::Angle_sum>&s3 = state.s3, &s4 = state.s4;
         s3.assign(nv, internal::Angle_sum());
         s4.assign(nv, internal::Angle_sum());
@@ -285,9 +286,14 @@ Vertex_type_counts compute_curvature(const PR_star_octree_3<GT, I>& tree, const 
             p[i] = state.points[l[i]];
             f[i] = state.fields[l[i]];
           }
+          // The corners in the leaf share the tetrahedron's volume and edge lengths.
+          unsigned corners = 0;
+          for (int k = 0; k < 4; ++k)
+            if (l[k] < nv) corners |= 1u << k;
+          const internal::Tetrahedron_solid_angles angles(p, f, corners);
           for (int k = 0; k < 4; ++k) {
-            if (l[k] >= nv) continue;
-            const auto a = internal::corner_solid_angles(p, f, k);
+            if (!(corners >> k & 1u)) continue;
+            const auto a = angles.corner(k);
             s3[l[k]].add(a.first);
             s4[l[k]].add(a.second);
           }

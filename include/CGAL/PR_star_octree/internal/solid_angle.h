@@ -8,8 +8,6 @@
 
 // Solid angles in R^3 and in 3-flats of R^4, for the discrete distortion (paper Section 8).
 
-#include <Eigen/Dense>
-
 #include <array>
 #include <cmath>
 #include <utility>
@@ -18,58 +16,90 @@ namespace CGAL {
 namespace PR_star_octree {
 namespace internal {
 
-/// The solid angle at the origin of the cone spanned by the vectors `a`, `b`, `c` of R^3, by the
-/// formula of Van Oosterom and Strackee: `tan(Omega / 2) = |a.(b x c)| / (|a||b||c| + (a.b)|c| +
-/// (a.c)|b| + (b.c)|a|)`, evaluated with `atan2` so that it is stable for every angle in [0, 2 pi).
-inline double solid_angle_3(const std::array<double, 3>& a, const std::array<double, 3>& b,
-                            const std::array<double, 3>& c) {
-  const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                     a[2] * (b[0] * c[1] - b[1] * c[0]);
-  auto dot = [](const std::array<double, 3>& u, const std::array<double, 3>& v) {
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-  };
-  const double la = std::sqrt(dot(a, a)), lb = std::sqrt(dot(b, b)), lc = std::sqrt(dot(c, c));
-  const double den = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
-  return 2. * std::atan2(std::abs(det), den);
-}
+/// The solid angles at the corners of one tetrahedron `p[0..3]` of R^3 and of its lift
+/// `(p[i], f[i])` to R^4, by the formula of Van Oosterom and Strackee: at a corner whose edges are
+/// `a`, `b`, `c`, `tan(Omega / 2) = V / (|a||b||c| + (a.b)|c| + (a.c)|b| + (b.c)|a|)`, evaluated
+/// with `atan2` so that it is stable for every angle in [0, 2 pi).  `V` is `|det[a b c]|` in R^3
+/// and, in R^4, the 3-volume spanned by the lifted edges (the norm of their exterior product, whose
+/// coordinates are the four 3x3 minors: far better conditioned than the square root of the Gram
+/// determinant, which squares the condition number).
+///
+/// `V` is six times the volume of the tetrahedron at every corner, and each edge's length is shared
+/// by the two corners it joins: both are computed once per tetrahedron, `V` from the edges of
+/// vertex 0, each length from the edge oriented from its lower to its higher vertex.  A corner's
+/// angles are therefore the same bits whichever corners are asked for (`corners`, a mask of bits
+/// `1 << k`), so that a leaf that asks for all four corners of a tetrahedron at once and a query of
+/// one vertex's star agree exactly.
+class Tetrahedron_solid_angles {
+public:
+  Tetrahedron_solid_angles(const std::array<std::array<double, 3>, 4>& p, const std::array<double, 4>& f,
+                           unsigned corners) {
+    for (int e = 0; e < 6; ++e) {
+      const int i = edge_vertex[e][0], j = edge_vertex[e][1];
+      for (int a = 0; a < 3; ++a) d_[e][a] = p[j][a] - p[i][a];
+      d_[e][3] = f[j] - f[i];
+      if (((corners >> i) | (corners >> j)) & 1u) {
+        const double q = d_[e][0] * d_[e][0] + d_[e][1] * d_[e][1] + d_[e][2] * d_[e][2];
+        length3_[e] = std::sqrt(q);
+        length4_[e] = std::sqrt(q + d_[e][3] * d_[e][3]);
+      }
+    }
+    // The four 3x3 minors of the lifted edges of vertex 0 (edges 0, 1, 2), one row left out each;
+    // the one without the field's row is the determinant of R^3.
+    const auto& a = d_[0];
+    const auto& b = d_[1];
+    const auto& c = d_[2];
+    auto minor = [&](int r0, int r1, int r2) {
+      return a[r0] * (b[r1] * c[r2] - b[r2] * c[r1]) - a[r1] * (b[r0] * c[r2] - b[r2] * c[r0]) +
+             a[r2] * (b[r0] * c[r1] - b[r1] * c[r0]);
+    };
+    const double m3 = minor(0, 1, 2), m2 = minor(0, 1, 3), m1 = minor(0, 2, 3), m0 = minor(1, 2, 3);
+    volume3_ = std::abs(m3);
+    volume4_ = std::sqrt(m0 * m0 + m1 * m1 + m2 * m2 + m3 * m3);
+  }
 
-/// The solid angle at the origin of the cone spanned by three vectors of R^4, measured inside the
-/// 3-flat that holds them: the Van Oosterom-Strackee formula with `|det[a b c]|` replaced by the
-/// 3-volume spanned by a, b, c (intrinsic to the flat).
-inline double solid_angle_4(const Eigen::Vector4d& a, const Eigen::Vector4d& b, const Eigen::Vector4d& c) {
-  // The 3-volume of the parallelepiped spanned by a, b, c in R^4: the norm of their exterior
-  // product, whose coordinates are the four 3x3 minors of [a b c] (one row left out each).  This is
-  // far better conditioned than the square root of the Gram determinant (which squares the
-  // condition number): thin tetrahedra give the same angle, to rounding, whatever the vertex order.
-  auto minor = [&](int skip) {
-    int r[3], n = 0;
-    for (int i = 0; i < 4; ++i)
-      if (i != skip) r[n++] = i;
-    return a[r[0]] * (b[r[1]] * c[r[2]] - b[r[2]] * c[r[1]]) -
-           a[r[1]] * (b[r[0]] * c[r[2]] - b[r[2]] * c[r[0]]) +
-           a[r[2]] * (b[r[0]] * c[r[1]] - b[r[1]] * c[r[0]]);
-  };
-  const double m0 = minor(0), m1 = minor(1), m2 = minor(2), m3 = minor(3);
-  const double volume = std::sqrt(m0 * m0 + m1 * m1 + m2 * m2 + m3 * m3);
-  const double la = a.norm(), lb = b.norm(), lc = c.norm();
-  const double den = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
-  return 2. * std::atan2(volume, den);
-}
+  /// The solid angles at corner `k` (one of the corners asked for) in R^3 and in R^4.
+  std::pair<double, double> corner(int k) const {
+    // The edges from k to the three other vertices, as the canonical edges and their signs
+    // (negating is exact).
+    int e[3];
+    double s[3];
+    int n = 0;
+    for (int x = 0; x < 4; ++x) {
+      if (x == k) continue;
+      e[n] = edge_index[k][x];
+      s[n] = x > k ? 1. : -1.;
+      ++n;
+    }
+    auto dot3 = [&](int u, int v) {
+      const auto& du = d_[e[u]];
+      const auto& dv = d_[e[v]];
+      return s[u] * s[v] * (du[0] * dv[0] + du[1] * dv[1] + du[2] * dv[2]);
+    };
+    const double ab = dot3(0, 1), ac = dot3(0, 2), bc = dot3(1, 2);
+    const double ab4 = ab + s[0] * s[1] * (d_[e[0]][3] * d_[e[1]][3]);
+    const double ac4 = ac + s[0] * s[2] * (d_[e[0]][3] * d_[e[2]][3]);
+    const double bc4 = bc + s[1] * s[2] * (d_[e[1]][3] * d_[e[2]][3]);
+    const double la = length3_[e[0]], lb = length3_[e[1]], lc = length3_[e[2]];
+    const double ma = length4_[e[0]], mb = length4_[e[1]], mc = length4_[e[2]];
+    const double den3 = la * lb * lc + ab * lc + ac * lb + bc * la;
+    const double den4 = ma * mb * mc + ab4 * mc + ac4 * mb + bc4 * ma;
+    return {2. * std::atan2(volume3_, den3), 2. * std::atan2(volume4_, den4)};
+  }
+
+private:
+  static constexpr int edge_vertex[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  static constexpr int edge_index[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
+  std::array<std::array<double, 4>, 6> d_;
+  std::array<double, 6> length3_{}, length4_{};
+  double volume3_, volume4_;
+};
 
 /// The solid angles at vertex `k` of the tetrahedron `p[0..3]` of R^3 and of its lift
-/// `(p[i], f[i])` to R^4.
+/// `(p[i], f[i])` to R^4 (the same bits as `Tetrahedron_solid_angles` gives for corner `k`).
 inline std::pair<double, double> corner_solid_angles(const std::array<std::array<double, 3>, 4>& p,
                                                      const std::array<double, 4>& f, int k) {
-  std::array<std::array<double, 3>, 3> e;
-  Eigen::Vector4d l[3];
-  int n = 0;
-  for (int i = 0; i < 4; ++i) {
-    if (i == k) continue;
-    for (int a = 0; a < 3; ++a) e[n][a] = p[i][a] - p[k][a];
-    l[n] << e[n][0], e[n][1], e[n][2], f[i] - f[k];
-    ++n;
-  }
-  return {solid_angle_3(e[0], e[1], e[2]), solid_angle_4(l[0], l[1], l[2])};
+  return Tetrahedron_solid_angles(p, f, 1u << k).corner(k);
 }
 
 } // namespace internal
