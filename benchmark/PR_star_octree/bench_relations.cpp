@@ -20,7 +20,13 @@
 // With --compact, every k_v has a second PR-star row, "PR-star compact": the octree with the
 // compact tetrahedron array (named parameter `compact_tetrahedra`), the same queries.
 //
-// usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--threads N] [--no-cgal] [--compact]
+// Times are the minimum of --reps repetitions inside each child.  With --rounds N, every child runs
+// N times, the whole sequence of structures one round after the other, and each time is the
+// minimum over the rounds: on a shared machine, whose slow spells last seconds, one round can
+// favour a structure by 20% or more.
+//
+// usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--rounds N] [--threads N] [--no-cgal]
+// [--compact]
 // [--csv OUT.csv] MESH...
 
 #include <CGAL/PR_star_octree.h>
@@ -237,8 +243,19 @@ std::string fmt(const char* f, double v) {
   return b;
 }
 
+// The minimum of each time over two measurements of the same row (the sizes are the same).
+void merge_minimum(Result& r, const Result& o) {
+  r.build_seconds = std::min(r.build_seconds, o.build_seconds);
+  r.vt_seconds = std::min(r.vt_seconds, o.vt_seconds);
+  r.distortion_seconds = std::min(r.distortion_seconds, o.distortion_seconds);
+  r.boundary_seconds = std::min(r.boundary_seconds, o.boundary_seconds);
+  r.boundary_count_seconds = std::min(r.boundary_count_seconds, o.boundary_count_seconds);
+  r.peak_rss_bytes = std::max(r.peak_rss_bytes, o.peak_rss_bytes);
+  r.ok = r.ok && o.ok;
+}
+
 const char* const usage =
-    "usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--threads N] [--no-cgal] "
+    "usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--rounds N] [--threads N] [--no-cgal] "
     "[--compact] [--csv OUT.csv] MESH...\n";
 
 } // namespace
@@ -246,7 +263,7 @@ const char* const usage =
 int main(int argc, char** argv) {
   std::vector<std::size_t> kvs = {prstar_bench::automatic_kv,  10, 20, 50, 100, 200, 400, 800,
                                   Octree::infinite_bucket_size};
-  int reps = 3;
+  int reps = 3, rounds = 1;
   bool with_cgal = true, with_compact = false;
   int threads = 0; // 0: TBB's default (every core)
   std::string csv_file;
@@ -255,6 +272,8 @@ int main(int argc, char** argv) {
     const std::string a = argv[i];
     if (a == "--reps" && i + 1 < argc)
       reps = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--rounds" && i + 1 < argc)
+      rounds = std::max(1, std::atoi(argv[++i]));
     else if (a == "--csv" && i + 1 < argc)
       csv_file = argv[++i];
     else if (a == "--no-cgal")
@@ -329,28 +348,40 @@ int main(int argc, char** argv) {
       std::string structure, order, kv;
       Result r;
     };
+    // Every structure is measured in its own child, one after the other; with --rounds R the whole
+    // sequence runs R times and each time is the minimum over the rounds, so that a slow spell of
+    // the machine (seconds long on a shared virtual machine) cannot fall on one structure only.
     std::vector<Row> rows;
-    std::cerr << "  extended IA ...\n";
-    rows.push_back({"extended IA", "file", "-",
-                    prstar_bench::in_child<Result>([&] { return run_ia(file_mesh, reps); })});
-    rows.push_back({"extended IA", "PR-star", "-",
-                    prstar_bench::in_child<Result>([&] { return run_ia(ordered, reps); })});
-    if (with_cgal) {
-      std::cerr << "  CGAL Triangulation_3 ...\n";
-      rows.push_back({"CGAL Triangulation_3", "file", "-",
-                      prstar_bench::in_child<Result>([&] { return run_cgal(file_mesh, reps); })});
-      rows.push_back({"CGAL Triangulation_3", "PR-star", "-",
-                      prstar_bench::in_child<Result>([&] { return run_cgal(ordered, reps); })});
-    }
-    for (std::size_t kv : kvs) {
-      std::cerr << "  PR-star k_v = " << kv_name(kv) << " ...\n";
-      for (const bool compact : {false, true}) {
-        if (compact && !with_compact) continue;
-        rows.push_back(
-            {compact ? "PR-star compact" : "PR-star", "file", kv_name(kv),
-             prstar_bench::in_child<Result>([&] { return run_prstar(file_mesh, kv, reps, compact); })});
-        if (kv == prstar_bench::automatic_kv) rows.back().kv += " (" + std::to_string(rows.back().r.kv) + ")";
+    for (int round = 0; round < rounds; ++round) {
+      if (rounds > 1) std::cerr << "  round " << round + 1 << " of " << rounds << '\n';
+      std::vector<Row> measured;
+      std::cerr << "  extended IA ...\n";
+      measured.push_back({"extended IA", "file", "-",
+                          prstar_bench::in_child<Result>([&] { return run_ia(file_mesh, reps); })});
+      measured.push_back({"extended IA", "PR-star", "-",
+                          prstar_bench::in_child<Result>([&] { return run_ia(ordered, reps); })});
+      if (with_cgal) {
+        std::cerr << "  CGAL Triangulation_3 ...\n";
+        measured.push_back({"CGAL Triangulation_3", "file", "-",
+                            prstar_bench::in_child<Result>([&] { return run_cgal(file_mesh, reps); })});
+        measured.push_back({"CGAL Triangulation_3", "PR-star", "-",
+                            prstar_bench::in_child<Result>([&] { return run_cgal(ordered, reps); })});
       }
+      for (std::size_t kv : kvs) {
+        std::cerr << "  PR-star k_v = " << kv_name(kv) << " ...\n";
+        for (const bool compact : {false, true}) {
+          if (compact && !with_compact) continue;
+          measured.push_back(
+              {compact ? "PR-star compact" : "PR-star", "file", kv_name(kv),
+               prstar_bench::in_child<Result>([&] { return run_prstar(file_mesh, kv, reps, compact); })});
+          if (kv == prstar_bench::automatic_kv)
+            measured.back().kv += " (" + std::to_string(measured.back().r.kv) + ")";
+        }
+      }
+      if (round == 0)
+        rows = std::move(measured);
+      else
+        for (std::size_t i = 0; i < rows.size(); ++i) merge_minimum(rows[i].r, measured[i].r);
     }
     const Result& ia_file = rows[0].r;
     const Result& ia_same = rows[1].r;
