@@ -59,8 +59,8 @@ int main() {
   const PSO::Critical_point_counts c =
       PSO::compute_critical_points(octree, field, CGAL::make_property_map(type),
                                    params::critical_points_output(std::back_inserter(critical)));
-  const auto on_boundary =
-      std::count_if(critical.begin(), critical.end(), [](const PSO::Critical_point& p) { return p.on_boundary; });
+  const auto on_boundary = std::count_if(critical.begin(), critical.end(),
+                                         [](const PSO::Critical_point& p) { return p.on_boundary; });
   std::cout << "critical points: " << c.minima << " minima, " << c.saddles_1 << " 1-saddles, " << c.saddles_2
             << " 2-saddles, " << c.maxima << " maxima, " << c.degenerate << " degenerate (" << on_boundary
             << " of the " << critical.size() << " on the boundary)\n";
@@ -69,10 +69,11 @@ int main() {
   //    characteristic of the mesh, 1 for the grid.
   const PSO::Forman_gradient<Octree> gradient = PSO::compute_forman_gradient(octree, field);
   std::cout << "critical simplices: " << gradient.number_of_critical_simplices(0) << " vertices, "
-            << gradient.number_of_critical_simplices(1) << " edges, " << gradient.number_of_critical_simplices(2)
-            << " triangles, " << gradient.number_of_critical_simplices(3)
-            << " tetrahedra; alternating sum " << gradient.alternating_sum() << ", "
-            << gradient.bytes_per_tetrahedron() << " bytes per tetrahedron\n";
+            << gradient.number_of_critical_simplices(1) << " edges, "
+            << gradient.number_of_critical_simplices(2) << " triangles, "
+            << gradient.number_of_critical_simplices(3) << " tetrahedra; alternating sum "
+            << gradient.alternating_sum() << ", " << gradient.bytes_per_tetrahedron()
+            << " bytes per tetrahedron\n";
 
   // 3. The Morse complexes, the pairs of persistence below 5% of the field's range cancelled.
   const auto [lowest, highest] = std::minmax_element(f.begin(), f.end());
@@ -80,14 +81,16 @@ int main() {
   std::vector<PSO::Morse_arc> arcs;
   const PSO::Morse_complexes<Octree> m = PSO::compute_morse_complexes(
       octree, field, params::persistence_threshold(threshold).arcs_output(std::back_inserter(arcs)));
-  std::cout << m.persistence_pairs.size() << " persistence pairs, " << arcs.size() << " arcs; after the cancellation: "
-            << m.ascending_cells << " ascending 3-cells, " << m.descending_cells << " descending 3-cells\n";
+  std::cout << m.persistence_pairs.size() << " persistence pairs, " << arcs.size()
+            << " arcs; after the cancellation: " << m.ascending_cells << " ascending 3-cells, "
+            << m.descending_cells << " descending 3-cells\n";
   std::size_t kept_minima = 0, kept_maxima = 0;
   for (const PSO::Persistence_pair& p : m.persistence_pairs) {
     if (p.persistence() < threshold) continue;
     const bool minimum = p.type == PSO::Persistence_pair::MINIMUM_SADDLE;
     (minimum ? kept_minima : kept_maxima) += 1;
-    std::cout << "  " << (minimum ? "minimum " : "maximum ") << p.extremum << " at " << points[p.extremum] << ": ";
+    std::cout << "  " << (minimum ? "minimum " : "maximum ") << p.extremum << " at " << points[p.extremum]
+              << ": ";
     if (p.is_essential())
       std::cout << "essential\n";
     else

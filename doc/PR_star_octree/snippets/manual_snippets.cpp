@@ -156,12 +156,15 @@ int main(int argc, char** argv) {
     const PSO::Morse_complexes<Octree> m = PSO::compute_morse_complexes(
         tree, CGAL::make_property_map(f),
         params::persistence_threshold(1.5).arcs_output(std::back_inserter(arcs)));
-    std::cout << c.minima << " minima, " << c.saddles_1 << " 1-saddles; gradient: c0 - c1 + c2 - c3 = "
-              << g.alternating_sum() << "; " << m.ascending_cells << " ascending 3-cell(s), "
-              << m.persistence_pairs.size() << " persistence pairs, " << arcs.size() << " arcs\n";
+    std::cout << c.minima << " minima, " << c.saddles_1
+              << " 1-saddles; gradient: c0 - c1 + c2 - c3 = " << g.alternating_sum() << "; "
+              << m.ascending_cells << " ascending 3-cell(s), " << m.persistence_pairs.size()
+              << " persistence pairs, " << arcs.size() << " arcs\n";
     // m.ascending_cell[v]: the minimum whose 3-cell holds vertex v (user's numbering)
     //! [topology]
-    auto index = [](int x, int y, int z) { return static_cast<std::size_t>(x + (n + 1) * (y + (n + 1) * z)); };
+    auto index = [](int x, int y, int z) {
+      return static_cast<std::size_t>(x + (n + 1) * (y + (n + 1) * z));
+    };
     check(c.minima == 2 && type[index(1, 1, 2)] == PSO::Critical_type::MINIMUM &&
               type[index(2, 2, 1)] == PSO::Critical_type::MINIMUM,
           "topology: the two wells are the minima");

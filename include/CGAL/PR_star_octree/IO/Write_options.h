@@ -13,8 +13,9 @@
 /// | named parameter | meaning |
 /// |---|---|
 /// | `CGAL::parameters::use_binary_mode(bool)` | binary (`true`) or text (`false`) |
-/// | `CGAL::PR_star_octree::parameters::compression(IO::Compression)` | compression of the binary data: `Compression::zlib` or `Compression::none` |
-/// | `CGAL::PR_star_octree::parameters::format_version(double)` | the version of the format written, e.g. 2.2 or 4.1 for gmsh |
+/// | `CGAL::PR_star_octree::parameters::compression(IO::Compression)` | compression of the binary data:
+/// `Compression::zlib` or `Compression::none` | | `CGAL::PR_star_octree::parameters::format_version(double)`
+/// | the version of the format written, e.g. 2.2 or 4.1 for gmsh |
 ///
 /// Each format accepts what its record of the format table (`IO::mesh_formats`, `formats.h`) says
 /// (`write_options_text()`, the README's table), uses its defaults for the options not given, and
