@@ -25,9 +25,8 @@
 // minimum over the rounds: on a shared machine, whose slow spells last seconds, one round can
 // favour a structure by 20% or more.
 //
-// usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--rounds N] [--threads N] [--no-cgal]
-// [--compact]
-// [--csv OUT.csv] MESH...
+// usage: bench_relations [--kv auto,10,20,...,inf] [--reps R] [--rounds N] [--threads N]
+//                        [--no-cgal] [--compact] [--csv OUT.csv] MESH...
 
 #include <CGAL/PR_star_octree.h>
 #include <CGAL/PR_star_octree/IO.h>

@@ -6,6 +6,7 @@
 #ifndef CGAL_PR_STAR_OCTREE_IO_WRITE_OPTIONS_H
 #define CGAL_PR_STAR_OCTREE_IO_WRITE_OPTIONS_H
 
+// clang-format off
 /// \file Write_options.h
 /// The options of every writer, as named parameters with the same names and meanings for every
 /// format:
@@ -13,15 +14,15 @@
 /// | named parameter | meaning |
 /// |---|---|
 /// | `CGAL::parameters::use_binary_mode(bool)` | binary (`true`) or text (`false`) |
-/// | `CGAL::PR_star_octree::parameters::compression(IO::Compression)` | compression of the binary data:
-/// `Compression::zlib` or `Compression::none` | | `CGAL::PR_star_octree::parameters::format_version(double)`
-/// | the version of the format written, e.g. 2.2 or 4.1 for gmsh |
+/// | `CGAL::PR_star_octree::parameters::compression(IO::Compression)` | compression of the binary data: `Compression::zlib` or `Compression::none` |
+/// | `CGAL::PR_star_octree::parameters::format_version(double)` | the version of the format written, e.g. 2.2 or 4.1 for gmsh |
 ///
 /// Each format accepts what its record of the format table (`IO::mesh_formats`, `formats.h`) says
 /// (`write_options_text()`, the README's table), uses its defaults for the options not given, and
 /// throws `Write_error` for an option it cannot honour (a text-only format asked for binary, a
 /// compression it does not have, a version it does not write).  The package's parameters chain
 /// first, %CGAL's after: `parameters::format_version(2.2).use_binary_mode(true)`.
+// clang-format on
 
 #include <CGAL/PR_star_octree/IO/Read_error.h>
 #include <CGAL/PR_star_octree/parameters.h>
