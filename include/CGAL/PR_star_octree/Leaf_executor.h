@@ -13,12 +13,14 @@
 
 #include <CGAL/PR_star_octree/Leaf_topology.h>
 #include <CGAL/PR_star_octree/internal/concurrency.h>
+#include <CGAL/PR_star_octree/internal/repeat_counter.h>
 #include <CGAL/PR_star_octree/parameters.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <mutex>
 #include <type_traits>
@@ -274,8 +276,7 @@ Simplex_counts count_simplices(const PR_star_octree_3<GT, I>& tree,
   using Index = typename PR_star_octree_3<GT, I>::Index;
   Simplex_counts s;
   s.tetrahedra = tree.number_of_tetrahedra();
-  // A triangle (v, a, b), a < b, as one 64-bit integer where indices have 32 bits (sorted 15%
-  // faster than pairs), else as the pair; either way in the order of (a, b).
+  // A triangle (v, a, b), a < b, as one 64-bit integer where indices have 32 bits, else as the pair.
   using Triangle_key = std::conditional_t<(sizeof(Index) <= 4), std::uint64_t, std::pair<Index, Index>>;
   const auto triangle_key = [](Index a, Index b) {
     if constexpr (sizeof(Index) <= 4)
@@ -285,44 +286,42 @@ Simplex_counts count_simplices(const PR_star_octree_3<GT, I>& tree,
   };
   // For each vertex v of the leaf, the edges (v, w) and triangles (v, a, b) with v the smallest
   // vertex are exactly those of the tetrahedra of v's star whose other vertices are greater than v:
-  // listed from the star and sorted, each distinct edge is counted once, and each triangle's run of
-  // repeats is the number of its tetrahedra (1: on the boundary, 3 or more: non-manifold).  VT holds
-  // a fifth of the bytes per tetrahedron of the triangles (bench_bucket_size --calibrate).
+  // listed from the star into hash tables, each distinct edge is counted once, and a triangle's
+  // number of insertions is its number of tetrahedra (1: on the boundary, 3 or more:
+  // non-manifold).  VT holds a fifth of the bytes per tetrahedron of the triangles
+  // (bench_bucket_size --calibrate).
   Leaf_executor<ConcurrencyTag>().map_reduce(
       tree, count_simplices_relations, 0,
       [&triangle_key](int, const Local& local) {
         Simplex_counts c;
-        std::vector<Index> edges;
-        std::vector<Triangle_key> triangles;
+        internal::Repeat_counter<Index> edges;
+        internal::Repeat_counter<Triangle_key> triangles;
         for (Index v = local.vertex_begin(); v < local.vertex_end(); ++v) {
           const auto star = local.vertex_tetrahedra(v);
-          if (star.begin() == star.end()) continue;
+          const auto n = static_cast<std::size_t>(std::distance(star.begin(), star.end()));
+          if (n == 0) continue;
           ++c.vertices;
-          edges.clear();
-          triangles.clear();
+          edges.clear(3 * n); // at most three of each per tetrahedron
+          triangles.clear(3 * n);
+          std::size_t shared = 0; // triangles of two tetrahedra or more
           for (Index t : star) {
             const auto& q = local.tetrahedron(t);
             Index o[3];
-            int n = 0;
+            int m = 0;
             for (int k = 0; k < 4; ++k)
-              if (q[k] > v) o[n++] = q[k];
-            for (int i = 0; i < n; ++i) {
-              edges.push_back(o[i]);
-              for (int j = i + 1; j < n; ++j)
-                triangles.push_back(triangle_key((std::min)(o[i], o[j]), (std::max)(o[i], o[j])));
+              if (q[k] > v) o[m++] = q[k];
+            for (int i = 0; i < m; ++i) {
+              edges.insert(o[i]);
+              for (int j = i + 1; j < m; ++j) {
+                const std::size_t r = triangles.insert(triangle_key((std::min)(o[i], o[j]), (std::max)(o[i], o[j])));
+                shared += (r == 2);
+                c.nonmanifold_triangles += (r == 3);
+              }
             }
           }
-          std::sort(edges.begin(), edges.end());
-          c.edges += static_cast<std::size_t>(std::unique(edges.begin(), edges.end()) - edges.begin());
-          std::sort(triangles.begin(), triangles.end());
-          for (std::size_t i = 0; i < triangles.size();) {
-            std::size_t j = i + 1;
-            while (j < triangles.size() && triangles[j] == triangles[i]) ++j;
-            ++c.triangles;
-            c.boundary_triangles += (j - i == 1);
-            c.nonmanifold_triangles += (j - i > 2);
-            i = j;
-          }
+          c.edges += edges.distinct();
+          c.triangles += triangles.distinct();
+          c.boundary_triangles += triangles.distinct() - shared;
         }
         return c;
       },

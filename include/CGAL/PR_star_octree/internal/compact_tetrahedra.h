@@ -549,8 +549,9 @@ private:
 };
 
 // The tetrahedra of one leaf's list, decoded once from the compact array, indexed by their index
-// in T: `operator[](t)` for `t` in the list (the owned range directly, a shared one by binary
-// search in the listed indices).  Plain arrays are indexed through a pointer instead.
+// in T: `operator[](t)` for `t` in the list (the owned range directly, a shared one through a
+// hash table from index to position filled at decoding).  Plain arrays are indexed through a
+// pointer instead.
 template <class Index>
 class Leaf_cells {
 public:
@@ -578,6 +579,7 @@ public:
     }
     owned_ = owned;
     T.decode_range(owned.first, owned.second, out);
+    index_shared();
   }
   // tetrahedron `t` of T; \pre `t` is in the list
   const Tetrahedron& operator[](Index t) const {
@@ -585,7 +587,7 @@ public:
     return find(t, hint);
   }
   // The same, for one thread reading the list mostly in its order: a shared tetrahedron is looked
-  // for first next to the previous one found, then by binary search.
+  // for first next to the previous one found, then in the hash table.
   class Reader {
   public:
     explicit Reader(const Leaf_cells& cells) : cells_(&cells) {}
@@ -597,22 +599,49 @@ public:
   };
 
   std::size_t memory_bytes() const {
-    return ids_.capacity() * sizeof(Index) + cells_.capacity() * sizeof(Tetrahedron);
+    return ids_.capacity() * sizeof(Index) + cells_.capacity() * sizeof(Tetrahedron) +
+           slots_.capacity() * sizeof(std::uint32_t);
   }
 
 private:
+  std::size_t slot_of(Index t) const {
+    return static_cast<std::size_t>((static_cast<std::uint64_t>(t) * 0x9E3779B97F4A7C15ull) >> shift_);
+  }
+  // Open addressing with linear probing, at most half full: slot -> 1 + position in `ids_`, 0 if
+  // empty.  A binary search among a few thousand shared indices took as long as the rest of
+  // `count_simplices()` in a leaf.
+  void index_shared() {
+    if (n_shared_ == 0) return;
+    unsigned bits = 4;
+    while ((std::size_t(1) << bits) < 2 * n_shared_) ++bits;
+    shift_ = 64 - bits;
+    mask_ = (std::size_t(1) << bits) - 1;
+    slots_.assign(mask_ + 1, 0);
+    for (std::size_t i = 0; i < n_shared_; ++i) {
+      std::size_t s = slot_of(ids_[i]);
+      while (slots_[s] != 0) s = (s + 1) & mask_;
+      slots_[s] = static_cast<std::uint32_t>(i + 1);
+    }
+  }
+
   // `next`: where to look first for a shared tetrahedron, then the position after the one found
   const Tetrahedron& find(Index t, std::size_t& next) const {
     const std::size_t d = static_cast<Index>(t - owned_.first);
     if (d < static_cast<std::size_t>(owned_.second - owned_.first)) return cells_[n_shared_ + d];
-    if (next >= n_shared_ || ids_[next] != t)
-      next = static_cast<std::size_t>(std::lower_bound(ids_.begin(), ids_.end(), t) - ids_.begin());
+    if (next >= n_shared_ || ids_[next] != t) {
+      std::size_t s = slot_of(t);
+      while (ids_[slots_[s] - 1] != t) s = (s + 1) & mask_;
+      next = slots_[s] - 1;
+    }
     return cells_[next++];
   }
 
   std::vector<Index> ids_;
   std::vector<Tetrahedron> cells_;
   std::size_t n_shared_ = 0;
+  std::vector<std::uint32_t> slots_;
+  std::size_t mask_ = 0;
+  unsigned shift_ = 64;
 
   std::pair<Index, Index> owned_{0, 0};
 };
