@@ -622,13 +622,17 @@ private:
 // The links of all the vertices of a leaf
 // ---------------------------------------------------------------------------------------------
 
+// The number of bits set.  Without a target that has the instruction (-mpopcnt, -march=...), GCC
+// compiles __builtin_popcountll to a call into libgcc: 5% of `compute_boundary` in perf; the bit
+// trick below is inline.
 inline int popcount64(std::uint64_t x) {
-#if defined(__GNUC__) || defined(__clang__)
+#if defined(__POPCNT__) && (defined(__GNUC__) || defined(__clang__))
   return __builtin_popcountll(x);
 #else
-  int n = 0;
-  for (; x != 0; x &= x - 1) ++n;
-  return n;
+  x = x - ((x >> 1) & 0x5555555555555555ull);
+  x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
+  x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0Full;
+  return static_cast<int>((x * 0x0101010101010101ull) >> 56);
 #endif
 }
 
