@@ -61,9 +61,11 @@ void for_each_block(std::size_t n, std::size_t grain, const F& f) {
 // sort) on digits of 10 bits, from bit `shift` down to bit 0, and insertion sort below 64 elements.
 // Equal keys end up in an order that depends only on the initial order, the same for any number of
 // threads: the buckets of the top digit are sorted independently, in parallel with `ConcurrencyTag`.
+// `counts`, when given, holds the number of elements of each value of the top digit (the caller
+// counted them in a pass of its own).
 template <class ConcurrencyTag, class Key, class Swap>
 void radix_sort_in_place(std::size_t b, std::size_t e, int shift, const Key& key, const Swap& swap,
-                         bool top = true) {
+                         bool top = true, const std::vector<std::size_t>* counts = nullptr) {
   constexpr int bits = 10;
   constexpr std::size_t radix = std::size_t(1) << bits;
   if (e - b < 64) { // insertion sort on the whole key
@@ -73,7 +75,10 @@ void radix_sort_in_place(std::size_t b, std::size_t e, int shift, const Key& key
   }
   const auto digit = [&](std::size_t i) { return static_cast<std::size_t>((key(i) >> shift) & (radix - 1)); };
   std::vector<std::size_t> head(radix + 1, 0), end(radix);
-  for (std::size_t i = b; i < e; ++i) ++head[digit(i) + 1];
+  if (counts != nullptr)
+    std::copy(counts->begin(), counts->begin() + radix, head.begin() + 1);
+  else
+    for (std::size_t i = b; i < e; ++i) ++head[digit(i) + 1];
   head[0] = b;
   for (std::size_t d = 0; d < radix; ++d) head[d + 1] += head[d];
   std::vector<std::size_t> first(head.begin(), head.end());
@@ -679,10 +684,27 @@ void PR_star_octree_3<GT, I>::sort_and_orient_tetrahedra(const std::vector<Index
   const std::size_t nt = tetrahedra_.size();
   using PR_star_octree::internal::for_each_block;
 
-  // New vertex numbering, in place.
+  // The sort key of a tetrahedron is its smallest vertex (below nv); the top digit of the radix
+  // sort takes the key's 10 highest bits.
+  int width = 0;
+  while (width < 64 && (std::uint64_t(nv > 0 ? nv - 1 : 0) >> width) != 0) ++width;
+  const int top_shift = (std::max)(width - 10, 0);
+
+  // New vertex numbering, in place, and the histogram of the top digit (which the radix sort
+  // would otherwise count in a pass of its own, on one thread): integer sums, the same for any
+  // number of threads.
+  std::vector<std::size_t> top_counts(std::size_t(1) << 10, 0);
+  std::mutex top_counts_mutex;
   for_each_block<ConcurrencyTag>(nt, 1 << 16, [&](std::size_t b, std::size_t e) {
-    for (std::size_t t = b; t < e; ++t)
-      for (Index& v : tetrahedra_[t]) v = from_original[v];
+    std::vector<std::size_t> local(top_counts.size(), 0);
+    for (std::size_t t = b; t < e; ++t) {
+      Tetrahedron& c = tetrahedra_[t];
+      for (Index& v : c) v = from_original[v];
+      const std::uint64_t smallest = (std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3]));
+      ++local[static_cast<std::size_t>(smallest >> top_shift) & 1023];
+    }
+    std::lock_guard<std::mutex> lock(top_counts_mutex);
+    for (std::size_t d = 0; d < local.size(); ++d) top_counts[d] += local[d];
   });
 
   // Locality: T sorted by smallest vertex, in place (radix sort), the labels and the permutation
@@ -703,10 +725,8 @@ void PR_star_octree_3<GT, I>::sort_and_orient_tetrahedra(const std::vector<Index
       if (with_labels) std::swap(labels_[i], labels_[j]);
       if (with_perm) std::swap(perm[i], perm[j]);
     };
-    int width = 0; // of the largest key, nv - 1; the top digit takes its 10 highest bits
-    while (width < 64 && (std::uint64_t(nv > 0 ? nv - 1 : 0) >> width) != 0) ++width;
-    const int top_shift = (std::max)(width - 10, 0);
-    PR_star_octree::internal::radix_sort_in_place<ConcurrencyTag>(0, nt, top_shift, key, swap);
+    PR_star_octree::internal::radix_sort_in_place<ConcurrencyTag>(0, nt, top_shift, key, swap, true,
+                                                                  &top_counts);
   }
   tetrahedron_to_original_ = std::move(perm);
 
