@@ -313,7 +313,8 @@ Simplex_counts count_simplices(const PR_star_octree_3<GT, I>& tree,
             for (int i = 0; i < m; ++i) {
               edges.insert(o[i]);
               for (int j = i + 1; j < m; ++j) {
-                const std::size_t r = triangles.insert(triangle_key((std::min)(o[i], o[j]), (std::max)(o[i], o[j])));
+                const std::size_t r =
+                    triangles.insert(triangle_key((std::min)(o[i], o[j]), (std::max)(o[i], o[j])));
                 shared += (r == 2);
                 c.nonmanifold_triangles += (r == 3);
               }
