@@ -114,12 +114,21 @@ std::uint64_t bits(double x) {
   return b;
 }
 
-// Everything the distributed octree computes, against the one-process octree of `m`.
-void compare(const std::string& name, const Mesh& m, PRS::Distributed_mesh_part part, std::size_t kv) {
+// Everything the distributed octree computes, against the one-process octree of `m` built with the
+// same parameters (`compact`: the compact tetrahedron array; `float32`: coordinates rounded to
+// floats, which each rank does to the doubles it read).
+void compare(const std::string& name, const Mesh& m, PRS::Distributed_mesh_part part, std::size_t kv,
+             bool compact = false, bool float32 = false) {
   prstar_test::Failure_context context(name + " (" + std::to_string(ranks_) + " ranks, k_v " +
-                                       std::to_string(kv) + ")");
-  const Octree one(PRS::make_input(m), params::bucket_size(kv));
-  const Distributed d(std::move(part), params::bucket_size(kv));
+                                       std::to_string(kv) + (compact ? ", compact" : "") +
+                                       (float32 ? ", float32" : "") + ")");
+  const auto np = params::bucket_size(kv).compact_tetrahedra(compact).coordinate_precision(
+      float32 ? PRS::Coordinate_precision::float32 : PRS::Coordinate_precision::as_input);
+  const Octree one(PRS::make_input(m), np);
+  const Distributed d(std::move(part), np);
+  CHECK_EQUAL(d.local_octree().is_compact(), compact);
+  CHECK_EQUAL(d.local_octree().has_float_coordinates(), float32);
+  CHECK_EQUAL(one.has_float_coordinates(), float32);
   CHECK_EQUAL(d.number_of_vertices(), m.points.size());
   CHECK_EQUAL(d.number_of_tetrahedra(), m.tetrahedra.size());
 
@@ -226,6 +235,10 @@ void test_lattices() {
     }
     for (std::size_t kv : {std::size_t(1), std::size_t(8), std::size_t(1000)})
       compare("lattice " + std::to_string(n), m, part_of(m), kv);
+    // the local octrees compact, with float coordinates (jittered: the rounding changes them)
+    compare("lattice " + std::to_string(n), m, part_of(m), 8, true, false);
+    compare("lattice " + std::to_string(n), m, part_of(m), 8, false, true);
+    compare("lattice " + std::to_string(n), m, part_of(m), 1000, true, true);
   }
   // most vertices in one corner: (x/n)^4 on each axis
   const int n = 7;

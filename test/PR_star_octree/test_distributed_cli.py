@@ -74,7 +74,10 @@ def same_summary(one, dist, what):
             check(one[1].split(": ", 1)[-1] == dist[1].split(": ", 1)[-1], f"{what}: message {one[1]} / {dist[1]}")
         return
     for k, v in dist.items():
-        if k in DISTRIBUTION_KEYS or k == "seconds" or k == "output":
+        if k in DISTRIBUTION_KEYS or k in ("seconds", "output", "streamed"):  # (how the file was read)
+            continue
+        if k not in one and k in one.get("storage", {}):  # stats: how the octree stores the mesh
+            check(one["storage"][k] == v, f"{what}: {k} = {v}, one process: {one['storage'][k]}")
             continue
         if k == "kv" and v == "auto":  # each rank chose k_v for its part: the one process chose too
             check(dist.get("kv_automatic") is True and one.get("kv_automatic") is True,
@@ -163,6 +166,16 @@ for mesh in meshes:
             same_summary(one, summary(args[:1] + [mesh] + args[1:], ranks), f"{args} {mesh} on {ranks} ranks")
     compare_outputs(mesh, ["boundary"], ["boundary"], 3)
     compare_outputs(mesh, ["curvature", "--field", "x"], ["boundary", "distortion", "domain_curvature"], 4)
+
+# the local octrees compact, with float coordinates: the summaries of one process with the same options
+if meshes:
+    for args in (["stats"], ["boundary"], ["curvature"], ["validate"]):
+        for storage in (["--compact"], ["--coordinates", "float32"], ["--compact", "--coordinates", "float32"]):
+            one = summary(args[:1] + [meshes[0]] + args[1:] + storage)
+            dist = summary(args[:1] + [meshes[0]] + args[1:] + storage, 3)
+            same_summary(one, dist, f"{args} {storage} {meshes[0]} on 3 ranks")
+            if not isinstance(dist, tuple) and "compact_tetrahedra" in dist:
+                check(dist["compact_tetrahedra"] == ("--compact" in storage), f"{args} {storage}: {dist}")
 
 # more ranks than vertices: ranks with nothing
 tiny = os.path.join(work, "one_tetrahedron.mesh")

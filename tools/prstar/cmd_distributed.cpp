@@ -50,8 +50,13 @@ std::unique_ptr<Distributed> build(const Options& o, Progress_bar& progress) {
   progress.phase("reading " + o.input() + " (" + std::to_string(ranks) + " ranks)");
   PRS::Distributed_mesh_part part = PRS::IO::read_mesh_part(o.input());
   progress.phase("partitioning and building the local octrees (k_v = " + bucket_size_string(o.kv()) + ")");
-  auto tree = std::make_unique<Distributed>(std::move(part),
-                                            params::bucket_size(o.kv()).maximum_depth(o.max_depth()));
+  // --compact and --coordinates as for one process; without either, plain tetrahedra (a rank
+  // builds in place, never by streaming) and the coordinates as read (doubles)
+  auto tree =
+      std::make_unique<Distributed>(std::move(part), params::bucket_size(o.kv())
+                                                         .maximum_depth(o.max_depth())
+                                                         .compact_tetrahedra(o.compact())
+                                                         .coordinate_precision(o.coordinate_precision()));
   // with --kv auto, each rank's octree chooses k_v for its own part: reported as "auto"
   o.set_used_kv(o.kv(), o.kv() == CGAL::PR_star_octree::automatic_bucket_size);
   return tree;
@@ -120,7 +125,10 @@ int stats_distributed(const Options& o) {
     j.field("ghost_tetrahedra", sum[1])
         .field("ghost_fraction", ghost_fraction)
         .field("ghost_vertices", sum[2]);
-    j.field("max_rank_tetrahedra", most[0]).field("bytes_sent", sum[3]).field("seconds", seconds);
+    j.field("max_rank_tetrahedra", most[0]).field("bytes_sent", sum[3]);
+    j.field("compact_tetrahedra", tree->local_octree().is_compact())
+        .field("float32_coordinates", tree->local_octree().has_float_coordinates())
+        .field("seconds", seconds);
     j.end_object();
     std::cout << j.str() << '\n';
     return exit_success;
@@ -139,6 +147,9 @@ int stats_distributed(const Options& o) {
   t.add({"ghost vertices (all ranks)", std::to_string(sum[2])});
   t.add({"largest rank", std::to_string(most[0]) + " tetrahedra"});
   t.add({"bytes sent (all ranks)", human_bytes(double(sum[3]))});
+  t.add({"local octrees",
+         std::string(tree->local_octree().is_compact() ? "compact" : "plain") + " tetrahedra, " +
+             (tree->local_octree().has_float_coordinates() ? "float32" : "double") + " coordinates"});
   std::cout << t.str();
   return exit_success;
 }
@@ -164,7 +175,8 @@ int boundary_distributed(const Options& o) {
     progress.finish();
   }
   if (tree->rank() == 0)
-    report_boundary(o, tree->number_of_vertices(), tree->number_of_tetrahedra(), b, seconds);
+    report_boundary(o, tree->number_of_vertices(), tree->number_of_tetrahedra(), b, seconds, -1,
+                    tree->local_octree().is_compact());
   return exit_success;
 }
 
@@ -252,7 +264,7 @@ int curvature_distributed(const Options& o) {
   }
   if (tree->rank() == 0)
     report_curvature(o, tree->number_of_vertices(), tree->number_of_tetrahedra(), field_name, summary,
-                     seconds);
+                     seconds, tree->local_octree().is_compact());
   return exit_success;
 }
 
@@ -267,7 +279,7 @@ int validate_distributed(const Options& o) {
   const double seconds = seconds_since(start);
   progress.finish();
   if (tree->rank() != 0) return r.valid ? exit_success : exit_invalid_mesh;
-  return report_validity(o, r, seconds);
+  return report_validity(o, r, seconds, nullptr, tree->local_octree().is_compact());
 }
 
 } // namespace

@@ -103,7 +103,7 @@ void write_curvature_csv(const std::string& csv, std::size_t n,
 /// same text and JSON keys; cmd_boundary.cpp, cmd_curvature.cpp, cmd_validate.cpp).
 /// `interfaces`: the number of triangles between two labels (-1: not computed, not reported);
 /// `compact`: the octree's tetrahedra were compact, `streamed`: read in passes (a distributed
-/// octree holds its parts plain)
+/// octree's parts are never streamed; compact with --compact)
 void report_boundary(const Options& o, std::size_t nv, std::size_t nt,
                      const CGAL::PR_star_octree::Boundary_counts& b, double seconds,
                      long long interfaces = -1, bool compact = false, bool streamed = false);

@@ -192,6 +192,20 @@ public:
   ///     \cgalParamType{`std::size_t`}
   ///     \cgalParamDefault{as `PR_star_octree_3`}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{compact_tetrahedra}
+  ///     \cgalParamDescription{the local octrees store their tetrahedra compactly (as
+  ///       `PR_star_octree_3`; the same results)}
+  ///     \cgalParamType{`bool`}
+  ///     \cgalParamDefault{`false`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{coordinate_precision}
+  ///     \cgalParamDescription{how the local octrees store the coordinates, which each rank reads as
+  ///       doubles: `Coordinate_precision::float32` rounds each to the nearest `float`, as
+  ///       `PR_star_octree_3` does, so the results are those of one process with the same
+  ///       parameter}
+  ///     \cgalParamType{`Coordinate_precision`}
+  ///     \cgalParamDefault{`Coordinate_precision::as_input` (doubles)}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{concurrency_tag}
   ///     \cgalParamDescription{how each rank builds its local octree}
   ///     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`}
@@ -719,6 +733,14 @@ private:
                                            Octree::default_bucket_size))
               .maximum_depth(parameters::choose_parameter(
                   parameters::get_parameter(np, internal_np::maximum_depth), Octree::default_max_depth))
+              .compact_tetrahedra(parameters::choose_parameter(
+                  parameters::get_parameter(np, internal_np::compact_tetrahedra), false))
+              .coordinate_precision(parameters::choose_parameter(
+                  parameters::get_parameter(np, internal_np::coordinate_precision),
+                  Coordinate_precision::as_input))
+              .concurrency_tag(
+                  parameters::choose_parameter(parameters::get_parameter(np, internal_np::concurrency_tag),
+                                               CGAL::Parallel_if_available_tag()))
               .vertex_permutation(true)
               .tetrahedron_permutation(true);
       local_ = std::make_unique<Octree>(std::move(mesh), local_np);
