@@ -56,6 +56,9 @@ void for_each_block(std::size_t n, std::size_t grain, const F& f) {
   }
 }
 
+// The width in bits of a digit of `radix_sort_in_place()`.
+constexpr int radix_sort_digit_bits = 10;
+
 // Sorts the elements `[b, e)` in place by `key(i)` (an unsigned integer below 2^(shift + 10)),
 // moving them only with `swap(i, j)`: an in-place most-significant-digit radix sort (American flag
 // sort) on digits of 10 bits, from bit `shift` down to bit 0, and insertion sort below 64 elements.
@@ -66,7 +69,7 @@ void for_each_block(std::size_t n, std::size_t grain, const F& f) {
 template <class ConcurrencyTag, class Key, class Swap>
 void radix_sort_in_place(std::size_t b, std::size_t e, int shift, const Key& key, const Swap& swap,
                          bool top = true, const std::vector<std::size_t>* counts = nullptr) {
-  constexpr int bits = 10;
+  constexpr int bits = radix_sort_digit_bits;
   constexpr std::size_t radix = std::size_t(1) << bits;
   if (e - b < 64) { // insertion sort on the whole key
     for (std::size_t i = b + 1; i < e; ++i)
@@ -685,23 +688,26 @@ void PR_star_octree_3<GT, I>::sort_and_orient_tetrahedra(const std::vector<Index
   using PR_star_octree::internal::for_each_block;
 
   // The sort key of a tetrahedron is its smallest vertex (below nv); the top digit of the radix
-  // sort takes the key's 10 highest bits.
+  // sort takes the key's highest bits.
+  using PR_star_octree::internal::radix_sort_digit_bits;
+  const auto key = [&](std::size_t t) {
+    const Tetrahedron& c = tetrahedra_[t];
+    return static_cast<std::uint64_t>((std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3])));
+  };
   int width = 0;
   while (width < 64 && (std::uint64_t(nv > 0 ? nv - 1 : 0) >> width) != 0) ++width;
-  const int top_shift = (std::max)(width - 10, 0);
+  const int top_shift = (std::max)(width - radix_sort_digit_bits, 0);
 
   // New vertex numbering, in place, and the histogram of the top digit (which the radix sort
   // would otherwise count in a pass of its own, on one thread): integer sums, the same for any
   // number of threads.
-  std::vector<std::size_t> top_counts(std::size_t(1) << 10, 0);
+  std::vector<std::size_t> top_counts(std::size_t(1) << radix_sort_digit_bits, 0);
   std::mutex top_counts_mutex;
   for_each_block<ConcurrencyTag>(nt, 1 << 16, [&](std::size_t b, std::size_t e) {
     std::vector<std::size_t> local(top_counts.size(), 0);
     for (std::size_t t = b; t < e; ++t) {
-      Tetrahedron& c = tetrahedra_[t];
-      for (Index& v : c) v = from_original[v];
-      const std::uint64_t smallest = (std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3]));
-      ++local[static_cast<std::size_t>(smallest >> top_shift) & 1023];
+      for (Index& v : tetrahedra_[t]) v = from_original[v];
+      ++local[static_cast<std::size_t>(key(t) >> top_shift) & (local.size() - 1)];
     }
     std::lock_guard<std::mutex> lock(top_counts_mutex);
     for (std::size_t d = 0; d < local.size(); ++d) top_counts[d] += local[d];
@@ -715,10 +721,6 @@ void PR_star_octree_3<GT, I>::sort_and_orient_tetrahedra(const std::vector<Index
     std::iota(perm.begin(), perm.end(), Index(0));
   }
   {
-    const auto key = [&](std::size_t t) {
-      const Tetrahedron& c = tetrahedra_[t];
-      return static_cast<std::uint64_t>((std::min)((std::min)(c[0], c[1]), (std::min)(c[2], c[3])));
-    };
     const bool with_labels = !labels_.empty(), with_perm = !perm.empty();
     const auto swap = [&](std::size_t i, std::size_t j) {
       std::swap(tetrahedra_[i], tetrahedra_[j]);
