@@ -296,11 +296,13 @@ void check_lean_construction(const Mesh& mesh, std::size_t kv, const std::string
 }
 
 // The in-place radix sort against std::sort: the same keys in order, the same elements; and the
-// same order with one thread and with several.
+// same order with one thread and with several (from 2^16 elements the top digit is placed in
+// parts, in parallel: 65536 and 300000 take that path, with few distinct keys too, where most
+// elements have no room in their own part and are left to the later rounds).
 void test_radix_sort_in_place() {
   std::mt19937 rng(11);
   for (std::size_t n : {std::size_t(0), std::size_t(5), std::size_t(63), std::size_t(64), std::size_t(5000),
-                        std::size_t(300000)}) {
+                        std::size_t(65536), std::size_t(300000)}) {
     for (std::uint64_t bound : {std::uint64_t(1), std::uint64_t(7), std::uint64_t(1000),
                                 std::uint64_t(1) << 21, std::uint64_t(1) << 33}) {
       std::uniform_int_distribution<std::uint64_t> u(0, bound - 1);
@@ -325,6 +327,43 @@ void test_radix_sort_in_place() {
       CHECK(sorted);
       std::sort(a.begin(), a.end());
       CHECK(a == expected);
+    }
+  }
+}
+
+// The parted placement of the radix sort's top digit, alone: every range ends up with its own
+// elements, none lost or repeated (checked against a counting of the input), for 1 to 7 parts,
+// uniform and skewed digits (nine tenths of one value: the parts of the others fill at once), and
+// the same result sequentially and in parallel for a given number of parts.
+void test_parallel_bucket_permutation() {
+  std::mt19937 rng(5);
+  const std::size_t radix = 64, n = 200000;
+  for (int skewed = 0; skewed < 2; ++skewed) {
+    std::vector<std::pair<std::size_t, std::size_t>> input(n); // (digit, identity)
+    for (std::size_t i = 0; i < n; ++i)
+      input[i] = {skewed && rng() % 10 != 0 ? std::size_t(3) : std::size_t(rng() % radix), i};
+    std::vector<std::size_t> first(radix + 1, 0);
+    for (const auto& x : input) ++first[x.first + 1];
+    for (std::size_t d = 0; d < radix; ++d) first[d + 1] += first[d];
+    for (std::size_t parts : {1, 2, 3, 4, 7}) {
+      const auto run = [&](auto tag) {
+        auto v = input;
+        std::vector<std::size_t> head(first.begin(), first.end() - 1), end(first.begin() + 1, first.end());
+        CGAL::PR_star_octree::internal::parallel_bucket_permutation<decltype(tag)>(
+            head, end, [&](std::size_t i) { return v[i].first; },
+            [&](std::size_t i, std::size_t j) { std::swap(v[i], v[j]); }, parts);
+        CHECK(head == end);
+        return v;
+      };
+      const auto a = run(CGAL::Sequential_tag());
+      bool placed = true;
+      for (std::size_t d = 0; d < radix; ++d)
+        for (std::size_t i = first[d]; i < first[d + 1]; ++i) placed = placed && a[i].first == d;
+      CHECK(placed);
+      std::vector<char> seen(n, 0);
+      for (const auto& x : a) seen[x.second] = 1;
+      CHECK(std::count(seen.begin(), seen.end(), 1) == std::ptrdiff_t(n));
+      CHECK(run(CGAL::Parallel_if_available_tag()) == a);
     }
   }
 }
@@ -1002,6 +1041,7 @@ int main(int argc, char** argv) {
   test_errors();
   test_other_traits();
   test_radix_sort_in_place();
+  test_parallel_bucket_permutation();
   test_compact_leaf_lists();
   test_compact_tetrahedra();
   test_automatic_bucket_size();

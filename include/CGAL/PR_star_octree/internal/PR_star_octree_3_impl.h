@@ -59,13 +59,78 @@ void for_each_block(std::size_t n, std::size_t grain, const F& f) {
 // The width in bits of a digit of `radix_sort_in_place()`.
 constexpr int radix_sort_digit_bits = 10;
 
+// The number of parts of `parallel_bucket_permutation()` in `radix_sort_in_place()`: fixed, so that
+// the order of equal keys is the same for any number of threads.
+constexpr std::size_t radix_sort_parts = 4;
+
+// Moves the elements of the ranges [head[d], end[d]) (one per value d of `digit`, each as long as
+// the number of elements of value d in their union) so that each holds its own: a round gives each
+// of the `parts` parts a stripe of every range, where it places what it can as the sequential
+// American flag pass does, parts in parallel with `ConcurrencyTag`; then every range puts its
+// placed elements first (ranges in parallel) and keeps the others for the next round (the scheme of
+// Cho et al., "PARADIS: an efficient parallel algorithm for in-place radix sort", VLDB 2015).  What
+// four rounds leave is placed by one thread.  A part only touches its own stripes, so the result
+// depends on `parts`, not on the threads.
+template <class ConcurrencyTag, class Digit, class Swap>
+void parallel_bucket_permutation(std::vector<std::size_t>& head, const std::vector<std::size_t>& end,
+                                 const Digit& digit, const Swap& swap, std::size_t parts) {
+  const std::size_t radix = end.size();
+  std::vector<std::size_t> part_head(parts * radix), part_end(parts * radix);
+  const auto place_part = [&](std::size_t p) {
+    std::size_t* h = part_head.data() + p * radix;
+    const std::size_t* t = part_end.data() + p * radix;
+    for (std::size_t d = 0; d < radix; ++d)
+      for (; h[d] < t[d]; ++h[d]) { // what stays at h[d] is in place, or has no room left in this part
+        const std::size_t i = h[d];
+        for (std::size_t x = digit(i); x != d && h[x] < t[x]; x = digit(i)) swap(i, h[x]++);
+      }
+  };
+  const auto gather_range = [&](std::size_t d) { // the placed elements first
+    std::size_t l = head[d], r = end[d];
+    for (;;) {
+      while (l < r && digit(l) == d) ++l;
+      while (l < r && digit(r - 1) != d) --r;
+      if (l == r) break;
+      swap(l++, --r);
+    }
+    head[d] = l;
+  };
+  for (int round = 0; round < 4 && parts > 1; ++round) {
+    std::size_t left = 0;
+    for (std::size_t d = 0; d < radix; ++d) left += end[d] - head[d];
+    if (left < (std::size_t(1) << 14)) break;
+    for (std::size_t d = 0; d < radix; ++d) {
+      const std::size_t size = end[d] - head[d];
+      for (std::size_t p = 0; p < parts; ++p) {
+        part_head[p * radix + d] = head[d] + size * p / parts;
+        part_end[p * radix + d] = head[d] + size * (p + 1) / parts;
+      }
+    }
+    if constexpr (is_parallel<ConcurrencyTag>()) {
+#ifdef CGAL_LINKED_WITH_TBB
+      tbb::parallel_for(std::size_t(0), parts, place_part);
+      tbb::parallel_for(std::size_t(0), radix, gather_range);
+#endif
+    } else {
+      for (std::size_t p = 0; p < parts; ++p) place_part(p);
+      for (std::size_t d = 0; d < radix; ++d) gather_range(d);
+    }
+  }
+  for (std::size_t d = 0; d < radix; ++d) // the rest, on one thread
+    for (; head[d] < end[d]; ++head[d]) {
+      const std::size_t i = head[d];
+      for (std::size_t x = digit(i); x != d; x = digit(i)) swap(i, head[x]++);
+    }
+}
+
 // Sorts the elements `[b, e)` in place by `key(i)` (an unsigned integer below 2^(shift + 10)),
 // moving them only with `swap(i, j)`: an in-place most-significant-digit radix sort (American flag
 // sort) on digits of 10 bits, from bit `shift` down to bit 0, and insertion sort below 64 elements.
 // Equal keys end up in an order that depends only on the initial order, the same for any number of
-// threads: the buckets of the top digit are sorted independently, in parallel with `ConcurrencyTag`.
-// `counts`, when given, holds the number of elements of each value of the top digit (the caller
-// counted them in a pass of its own).
+// threads and for either `ConcurrencyTag`: the top digit of a range of at least 2^16 elements is
+// placed by `parallel_bucket_permutation()` in `radix_sort_parts` parts, and its buckets are sorted
+// independently, in parallel with `ConcurrencyTag`.  `counts`, when given, holds the number of
+// elements of each value of the top digit (the caller counted them in a pass of its own).
 template <class ConcurrencyTag, class Key, class Swap>
 void radix_sort_in_place(std::size_t b, std::size_t e, int shift, const Key& key, const Swap& swap,
                          bool top = true, const std::vector<std::size_t>* counts = nullptr) {
@@ -77,22 +142,18 @@ void radix_sort_in_place(std::size_t b, std::size_t e, int shift, const Key& key
     return;
   }
   const auto digit = [&](std::size_t i) { return static_cast<std::size_t>((key(i) >> shift) & (radix - 1)); };
-  std::vector<std::size_t> head(radix + 1, 0), end(radix);
+  std::vector<std::size_t> head(radix + 1, 0);
   if (counts != nullptr)
     std::copy(counts->begin(), counts->begin() + radix, head.begin() + 1);
   else
     for (std::size_t i = b; i < e; ++i) ++head[digit(i) + 1];
   head[0] = b;
   for (std::size_t d = 0; d < radix; ++d) head[d + 1] += head[d];
-  std::vector<std::size_t> first(head.begin(), head.end());
-  for (std::size_t d = 0; d < radix; ++d) end[d] = first[d + 1];
-  for (std::size_t d = 0; d < radix; ++d) {
-    while (head[d] < end[d]) {
-      const std::size_t i = head[d];
-      for (std::size_t dd = digit(i); dd != d; dd = digit(i)) swap(i, head[dd]++);
-      ++head[d];
-    }
-  }
+  const std::vector<std::size_t> first(head.begin(), head.end());
+  const std::vector<std::size_t> end(first.begin() + 1, first.end());
+  head.pop_back();
+  const bool parted = top && e - b >= (std::size_t(1) << 16);
+  parallel_bucket_permutation<ConcurrencyTag>(head, end, digit, swap, parted ? radix_sort_parts : 1);
   if (shift == 0) return;
   const int next = (std::max)(shift - bits, 0);
   const auto recurse = [&](std::size_t d) {
@@ -107,7 +168,6 @@ void radix_sort_in_place(std::size_t b, std::size_t e, int shift, const Key& key
     }
 #endif
   }
-  (void)top;
   for (std::size_t d = 0; d < radix; ++d) recurse(d);
 }
 
