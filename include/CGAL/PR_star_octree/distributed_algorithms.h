@@ -233,10 +233,13 @@ Boundary_counts compute_boundary(const Distributed_octree_3<GT>& tree, VertexTyp
     owned.add(t);
     put(vertex_type_map, i, t);
   }
-  for (Index t = 0; t < octree.number_of_tetrahedra(); ++t) {
+  // (one pass over the tetrahedra: consecutive ones are decoded together when compact)
+  const auto tetrahedra = octree.tetrahedra();
+  Index t = 0;
+  for (auto it = tetrahedra.begin(); it != tetrahedra.end(); ++it, ++t) {
     if (!tree.counts_tetrahedron(t)) continue;
     bool touches = false;
-    for (Index v : octree.tetrahedron(t)) {
+    for (Index v : *it) {
       const auto type = static_cast<Vertex_type>(types[octree.original_vertex(v)]);
       touches = touches || type == Vertex_type::BOUNDARY || type == Vertex_type::NONMANIFOLD;
     }
@@ -311,7 +314,7 @@ Validity_result check_validity(const Distributed_octree_3<GT>& tree,
         const auto owned = local.tetrahedra().owned();
         for (Index t = owned.first; t < owned.second; ++t) {
           if (!tree.counts_tetrahedron(t)) continue;
-          const auto& c = octree.tetrahedron(t);
+          const auto& c = local.tetrahedron(t); // decoded with the leaf
           const CGAL::Orientation o =
               orientation(octree.point(c[0]), octree.point(c[1]), octree.point(c[2]), octree.point(c[3]));
           if (o == CGAL::COPLANAR)
