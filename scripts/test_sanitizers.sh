@@ -4,7 +4,7 @@
 # detected).  Run by .ci/run after scripts/test.sh.
 #
 # SANITIZER_SCOPE=all (default, CI): every test executable but four, i.e. the library's code, the
-#   readers and writers with their malformed files, the MPI code on 1-4 ranks; not the prstar tool
+#   readers and writers with their malformed files, the MPI code on 1 and 3 ranks; not the prstar tool
 #   (its bad-input tests, test_malformed and test_awkward, and its CLI comparisons run in the normal
 #   build).  Left out: test_cgal_baseline (the benchmark's Triangulation_3 baseline), test_c3t3 (the
 #   C3T3 adapter: a Mesh_3 translation unit), test_custom_traits (the same code on another kernel)
