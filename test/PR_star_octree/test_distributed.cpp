@@ -116,7 +116,8 @@ std::uint64_t bits(double x) {
 
 // Everything the distributed octree computes, against the one-process octree of `m` built with the
 // same parameters (`compact`: the compact tetrahedron array; `float32`: coordinates rounded to
-// floats, which each rank does to the doubles it read).
+// floats, which each rank does to the doubles it read; without it, floats when the file's were,
+// `m.float32_points`).
 void compare(const std::string& name, const Mesh& m, PRS::Distributed_mesh_part part, std::size_t kv,
              bool compact = false, bool float32 = false) {
   prstar_test::Failure_context context(name + " (" + std::to_string(ranks_) + " ranks, k_v " +
@@ -127,8 +128,8 @@ void compare(const std::string& name, const Mesh& m, PRS::Distributed_mesh_part 
   const Octree one(PRS::make_input(m), np);
   const Distributed d(std::move(part), np);
   CHECK_EQUAL(d.local_octree().is_compact(), compact);
-  CHECK_EQUAL(d.local_octree().has_float_coordinates(), float32);
-  CHECK_EQUAL(one.has_float_coordinates(), float32);
+  CHECK_EQUAL(d.local_octree().has_float_coordinates(), float32 || m.float32_points);
+  CHECK_EQUAL(one.has_float_coordinates(), float32 || m.float32_points);
   CHECK_EQUAL(d.number_of_vertices(), m.points.size());
   CHECK_EQUAL(d.number_of_tetrahedra(), m.tetrahedra.size());
 
@@ -329,6 +330,33 @@ void test_files(const std::vector<std::string>& paths) {
   }
 }
 
+// Files whose points are 32-bit floats: the local octrees store floats by default, as one process
+// does, whichever reader the ranks use (an appended-raw .vtu read in byte ranges, a compressed
+// .vtu and a binary .vtk read by rank 0 and scattered).
+void test_float32_files() {
+  namespace fs = std::filesystem;
+  const int n = 6;
+  Mesh m = lattice(n, [n](int i, int j, int k) { return jittered(i, j, k, n); });
+  for (auto& q : m.points)
+    q = Mesh::Point_3(double(float(q.x())), double(float(q.y())), double(float(q.z())));
+  m.float32_points = true;
+  const std::string folder = "distributed_float32_" + std::to_string(ranks_);
+  if (rank_ == 0) {
+    fs::create_directories(folder);
+    PRS::IO::write_tetrahedral_mesh(folder + "/raw.vtu", m, params::compression(PRS::IO::Compression::none));
+    PRS::IO::write_tetrahedral_mesh(folder + "/zlib.vtu", m);
+    PRS::IO::write_tetrahedral_mesh(folder + "/binary.vtk", m, CGAL::parameters::use_binary_mode(true));
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  for (const std::string f : {"raw.vtu", "zlib.vtu", "binary.vtk"}) {
+    Mesh back;
+    PRS::IO::read_tetrahedral_mesh(folder + "/" + f, back);
+    CHECK(back.float32_points);
+    compare("float32 points, " + f, back, PRS::IO::read_mesh_part(folder + "/" + f), 8);
+    compare("float32 points, " + f, back, PRS::IO::read_mesh_part(folder + "/" + f), 8, true);
+  }
+}
+
 // A .pvtu read back: (a) written by write_pvtu (ghost cells, global ids: the vertices keep their
 // ids, everything is compared), (b) pieces without ghosts or global ids, cut by hand (the copies of
 // the shared points merged by coordinates: the counts are compared).
@@ -419,6 +447,7 @@ int main(int argc, char** argv) {
   test_tiny();
   test_bad_parts();
   test_pvtu();
+  test_float32_files();
   test_files(std::vector<std::string>(argv + 1, argv + argc));
   // every rank's failures count; rank 0 reports
   long long failures = prstar_test::failures(), all = 0;

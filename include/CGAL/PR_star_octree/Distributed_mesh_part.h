@@ -43,6 +43,9 @@ struct Distributed_mesh_part {
   std::uint64_t first_vertex = 0;
   /// x, y, z of each vertex of the block
   std::vector<double> coordinates;
+  /// whether the coordinates were 32-bit floats in the file (the same on every rank): the local
+  /// octrees then store floats under `Coordinate_precision::as_input`, as one process does
+  bool float32_points = false;
   /// the names of the point arrays (the first is the scalar field of the octree), the same on
   /// every rank
   std::vector<std::string> point_array_names;

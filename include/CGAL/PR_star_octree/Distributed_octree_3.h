@@ -202,9 +202,10 @@ public:
   ///     \cgalParamDescription{how the local octrees store the coordinates, which each rank reads as
   ///       doubles: `Coordinate_precision::float32` rounds each to the nearest `float`, as
   ///       `PR_star_octree_3` does, so the results are those of one process with the same
-  ///       parameter}
+  ///       parameter; `Coordinate_precision::as_input` keeps floats when the parts say the file's
+  ///       were (`Distributed_mesh_part::float32_points` on every rank)}
   ///     \cgalParamType{`Coordinate_precision`}
-  ///     \cgalParamDefault{`Coordinate_precision::as_input` (doubles)}
+  ///     \cgalParamDefault{`Coordinate_precision::as_input`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{concurrency_tag}
   ///     \cgalParamDescription{how each rank builds its local octree}
@@ -430,6 +431,9 @@ private:
         all_labels = 0;
     MPI_Allreduce(&any_labels, &all_labels, 1, MPI_INT, MPI_MAX, comm_);
     has_labels_ = all_labels != 0;
+    int float32 = part.float32_points ? 1 : 0, all_float32 = 0; // floats only if every rank says so
+    MPI_Allreduce(&float32, &all_float32, 1, MPI_INT, MPI_MIN, comm_);
+    float32_points_ = all_float32 != 0;
 
     // The bounding box of the whole mesh.
     double lo[3], hi[3];
@@ -724,6 +728,7 @@ private:
       for (std::size_t i = 0; i < n; ++i)
         mesh.points.emplace_back(coordinates_[3 * i], coordinates_[3 * i + 1], coordinates_[3 * i + 2]);
       std::vector<double>().swap(coordinates_);
+      mesh.float32_points = float32_points_;
       mesh.tetrahedra = received_tetrahedra_.release();
       mesh.tetrahedron_labels = received_labels_.release();
       if (!arrays_.empty()) mesh.point_data.push_back({array_names_[0], arrays_[0]});
@@ -757,6 +762,7 @@ private:
   std::vector<std::string> array_names_;
   std::string label_name_ = "label";
   bool has_labels_ = false;
+  bool float32_points_ = false; // every part's `float32_points`
   std::size_t owned_ = 0;
   std::vector<Global_id> gids_;
   std::vector<std::int32_t> ghost_owner_;

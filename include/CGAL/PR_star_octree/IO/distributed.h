@@ -74,9 +74,10 @@ inline Distributed_mesh_part read_on_rank_0_and_scatter(const std::string& file,
   });
   Distributed_mesh_part part;
   // sizes and names
-  std::uint64_t sizes[4] = {mesh.points.size(), mesh.tetrahedra.size(), mesh.point_data.size(),
-                            mesh.tetrahedron_labels.empty() ? 0u : 1u};
-  MPI_Bcast(sizes, 4, MPI_UINT64_T, 0, comm);
+  std::uint64_t sizes[5] = {mesh.points.size(), mesh.tetrahedra.size(), mesh.point_data.size(),
+                            mesh.tetrahedron_labels.empty() ? 0u : 1u, mesh.float32_points ? 1u : 0u};
+  MPI_Bcast(sizes, 5, MPI_UINT64_T, 0, comm);
+  part.float32_points = sizes[4] != 0;
   std::vector<std::uint64_t> vertex_counts(p), tet_counts(p);
   for (int r = 0; r < p; ++r) {
     const auto b = block(sizes[0], r, p), t = block(sizes[1], r, p);
@@ -128,6 +129,7 @@ inline Distributed_mesh_part read_vtu_ranges(std::shared_ptr<const Vtu_range_rea
   Distributed_mesh_part part;
   const auto vb = block(reader->number_of_points(), me, p), cb = block(reader->number_of_cells(), me, p);
   part.first_vertex = vb.first;
+  part.float32_points = reader->float32_points();
   part.point_array_names = reader->point_array_names();
   run_collectively(comm, [&] {
     part.point_arrays.resize(part.point_array_names.size());
@@ -185,11 +187,12 @@ inline Distributed_mesh_part read_pvtu(const std::string& file, MPI_Comm comm) {
   std::vector<std::string> names;
   std::vector<std::array<std::uint64_t, 4>> tets; // in indices of `points`
   std::vector<int> labels;
-  bool by_id = true, has_labels = false;
+  bool by_id = true, has_labels = false, float32 = true; // float32: every piece's points are
   run_collectively(comm, [&] {
     for (std::size_t k = first_piece; k < last_piece; ++k) {
       Indexed_tetrahedral_mesh<> m;
       read_tetrahedral_mesh(pieces[k], m);
+      float32 = float32 && m.float32_points;
       const std::uint64_t base = points.size();
       const Data_array* ids = nullptr;
       std::vector<const Data_array*> kept;
@@ -231,9 +234,10 @@ inline Distributed_mesh_part read_pvtu(const std::string& file, MPI_Comm comm) {
     }
   });
   // the same merge rule and names on every rank (a rank without a piece agrees with the others)
-  int local_by_id = (by_id || first_piece == last_piece) ? 1 : 0, all_by_id = 0;
-  MPI_Allreduce(&local_by_id, &all_by_id, 1, MPI_INT, MPI_MIN, comm);
-  by_id = all_by_id != 0 && !pieces.empty();
+  int local_flags[2] = {(by_id || first_piece == last_piece) ? 1 : 0, float32 ? 1 : 0}, all_flags[2] = {0, 0};
+  MPI_Allreduce(local_flags, all_flags, 2, MPI_INT, MPI_MIN, comm);
+  by_id = all_flags[0] != 0 && !pieces.empty();
+  const bool all_float32 = all_flags[1] != 0 && !pieces.empty();
   {
     // the names and the labels of piece 0, from the rank that read it
     int root = 0;
@@ -288,6 +292,7 @@ inline Distributed_mesh_part read_pvtu(const std::string& file, MPI_Comm comm) {
             [&](std::size_t a, std::size_t b) { return Piece_point::less(received[a], received[b], by_id); });
   std::vector<std::uint64_t> merged(received.size());
   Distributed_mesh_part part;
+  part.float32_points = all_float32;
   part.point_array_names = names;
   part.point_arrays.assign(na, {});
   std::uint64_t distinct = 0;
