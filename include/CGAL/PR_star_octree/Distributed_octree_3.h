@@ -427,13 +427,14 @@ private:
     agree_on_errors(comm_, error);
     array_names_ = part.point_array_names;
     label_name_ = part.label_name;
-    int any_labels = (deferred ? part.deferred_labels : !part.tetrahedron_labels.empty()) ? 1 : 0,
-        all_labels = 0;
-    MPI_Allreduce(&any_labels, &all_labels, 1, MPI_INT, MPI_MAX, comm_);
-    has_labels_ = all_labels != 0;
-    int float32 = part.float32_points ? 1 : 0, all_float32 = 0; // floats only if every rank says so
-    MPI_Allreduce(&float32, &all_float32, 1, MPI_INT, MPI_MIN, comm_);
-    float32_points_ = all_float32 != 0;
+    // labels if any rank has them; floats only if every rank says so (one reduction: the maximum
+    // of "has labels" and "not floats")
+    int flags[2] = {(deferred ? part.deferred_labels : !part.tetrahedron_labels.empty()) ? 1 : 0,
+                    part.float32_points ? 0 : 1},
+        all_flags[2] = {0, 0};
+    MPI_Allreduce(flags, all_flags, 2, MPI_INT, MPI_MAX, comm_);
+    has_labels_ = all_flags[0] != 0;
+    float32_points_ = all_flags[1] == 0;
 
     // The bounding box of the whole mesh.
     double lo[3], hi[3];

@@ -187,7 +187,7 @@ inline Distributed_mesh_part read_pvtu(const std::string& file, MPI_Comm comm) {
   std::vector<std::string> names;
   std::vector<std::array<std::uint64_t, 4>> tets; // in indices of `points`
   std::vector<int> labels;
-  bool by_id = true, has_labels = false, float32 = true; // float32: every piece's points are
+  bool by_id = true, has_labels = false, float32 = true; // float32: this rank's pieces all are
   run_collectively(comm, [&] {
     for (std::size_t k = first_piece; k < last_piece; ++k) {
       Indexed_tetrahedral_mesh<> m;

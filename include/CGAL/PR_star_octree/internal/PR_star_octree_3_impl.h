@@ -75,7 +75,11 @@ template <class ConcurrencyTag, class Digit, class Swap>
 void parallel_bucket_permutation(std::vector<std::size_t>& head, const std::vector<std::size_t>& end,
                                  const Digit& digit, const Swap& swap, std::size_t parts) {
   const std::size_t radix = end.size();
-  std::vector<std::size_t> part_head(parts * radix), part_end(parts * radix);
+  std::vector<std::size_t> part_head, part_end; // the parts' stripes (none with one part)
+  if (parts > 1) {
+    part_head.resize(parts * radix);
+    part_end.resize(parts * radix);
+  }
   const auto place_part = [&](std::size_t p) {
     std::size_t* h = part_head.data() + p * radix;
     const std::size_t* t = part_end.data() + p * radix;
